@@ -1,0 +1,24 @@
+"""dhlab: homogeneous transforms and the Denavit-Hartenberg convention, interactively.
+
+Angles are radians in the API (``deg(30)`` converts), lengths in the robot's unit.
+
+>>> import dhlab
+>>> puma = dhlab.robots.puma560()
+>>> puma.fk(puma.qz).round(4)[:3, 3].tolist()
+[0.4521, -0.1501, 0.4318]
+"""
+from . import ik, robots, symbolic, transforms
+from .chain import Link, Move, Robot, Rot
+from .dh import DHRobot, PrismaticDH, RevoluteDH
+from .symbolic import compact, legend
+from .table import DHTable
+from .transforms import Rx, Ry, Rz, Tr, Tx, Tz, check_rigid, dh_matrix, inv, is_rigid, rpy, trans
+from .units import deg, rad
+from .validation import DHLabError
+
+__all__ = [
+    "DHRobot", "RevoluteDH", "PrismaticDH", "Robot", "Link", "Rot", "Move", "DHTable",
+    "Rx", "Ry", "Rz", "Tr", "trans", "Tx", "Tz", "dh_matrix", "inv", "is_rigid", "check_rigid", "rpy",
+    "deg", "rad", "compact", "legend", "DHLabError", "robots", "ik", "symbolic", "transforms",
+]
+__version__ = "0.1.0"

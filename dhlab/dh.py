@@ -1,0 +1,218 @@
+"""Standard Denavit-Hartenberg robots: ``A_i = Rz(θ_i)·Tz(d_i)·Tx(a_i)·Rx(α_i)``.
+
+A DH link is a :class:`~dhlab.chain.Link` with exactly those four motions; the
+joint variable is added to θ (revolute) or to d (prismatic). Angles are radians:
+
+>>> import numpy as np
+>>> from dhlab import DHRobot, RevoluteDH, deg
+>>> arm = DHRobot([RevoluteDH(a=1.0), RevoluteDH(a=0.5)], name="2R")
+>>> arm.fk([deg(90), 0]).round(6)[:3, 3].tolist()
+[0.0, 1.5, 0.0]
+
+Tables typed from the slides (degrees, joint variables by name) go through
+:meth:`DHRobot.from_table`:
+
+>>> ssrms_like = DHRobot.from_table([("q1", 2.5, 0, -90), ("q2", 6, 0, 0)])
+>>> print(ssrms_like.table())
+ i | θ  | d   | a | α    | joint
+ 1 | q1 | 2.5 | 0 | -90° | R
+ 2 | q2 | 6   | 0 | 0°   | R
+"""
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import sympy as sp
+
+from .chain import Link, Move, Robot, Rot
+from .symbolic import exact_angle, exact_length
+from .table import DHTable
+from .transforms import Rx, Rz
+from .units import is_angle
+from .validation import DHLabError, FULL_TURN
+
+__all__ = ["RevoluteDH", "PrismaticDH", "DHRobot"]
+
+
+def _check_angle_param(value, name: str):
+    if isinstance(value, sp.Basic):
+        return value
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise DHLabError(f"{name} must be a number of radians or a sympy expression, got {value!r}.") from None
+    if not np.isfinite(v) or abs(v) > FULL_TURN + 1e-9:
+        raise DHLabError(
+            f"{name} = {v:g} is not an angle in radians (more than a full turn, or not finite). "
+            f"Angles are radians: for {v:g} degrees write dhlab.deg({v:g})."
+        )
+    return value
+
+
+def _check_length_param(value, name: str):
+    if isinstance(value, sp.Basic):
+        return value
+    if is_angle(value):
+        raise DHLabError(f"{name} is a length, but you gave an angle ({value!r}): pass a plain number.")
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise DHLabError(f"{name} must be a number (a length) or a sympy expression, got {value!r}.") from None
+    if not np.isfinite(v):
+        raise DHLabError(f"{name} is {v}: it must be a finite length.")
+    return value
+
+
+class DHLink(Link):
+    """Common part of RevoluteDH and PrismaticDH: the four DH parameters."""
+
+    def __init__(self, theta, d, a, alpha, offset, revolute: bool, qlim, name):
+        self.theta = _check_angle_param(theta, "theta")
+        self.d = _check_length_param(d, "d")
+        self.a = _check_length_param(a, "a")
+        self.alpha = _check_angle_param(alpha, "alpha")
+        if revolute:
+            self.offset = _check_angle_param(offset, "offset (added to the joint angle)")
+            factors = [Rot("z", self.offset, joint=True), Move("z", self.d)]
+        else:
+            self.offset = _check_length_param(offset, "offset (added to the joint displacement)")
+            factors = [Rot("z", self.theta), Move("z", self.offset, joint=True)]
+        super().__init__(factors + [Move("x", self.a), Rot("x", self.alpha)], name=name, qlim=qlim)
+
+    def __repr__(self):
+        kind = type(self).__name__
+        return f"{kind}(theta={self.theta}, d={self.d}, a={self.a}, alpha={self.alpha}, offset={self.offset})"
+
+
+class RevoluteDH(DHLink):
+    """A revolute DH link: θ = q + offset; d, a, α constant (α, offset in radians)."""
+
+    def __init__(self, d=0, a=0, alpha=0, offset=0, qlim=None, name: str = ""):
+        super().__init__(0, d, a, alpha, offset, True, qlim, name)
+
+
+class PrismaticDH(DHLink):
+    """A prismatic DH link: d = q + offset; θ, a, α constant (θ, α in radians)."""
+
+    def __init__(self, theta=0, a=0, alpha=0, offset=0, qlim=None, name: str = ""):
+        super().__init__(theta, 0, a, alpha, offset, False, qlim, name)
+
+
+class DHRobot(Robot):
+    """A serial robot described by a standard DH table (one :class:`RevoluteDH` or
+    :class:`PrismaticDH` per joint), with optional base and tool transforms."""
+
+    def __init__(self, links, name: str = "robot", base=None, tool=None,
+                 params=None, joint_symbols=None, unit: str = ""):
+        links = list(links)
+        for i, link in enumerate(links):
+            if not isinstance(link, DHLink):
+                raise DHLabError(
+                    f"link {i + 1} of a DHRobot must be RevoluteDH(...) or PrismaticDH(...), got "
+                    f"{type(link).__name__}. For other products of motions use dhlab.Robot."
+                )
+        super().__init__(links, name=name, base=base, tool=tool, params=params,
+                         joint_symbols=joint_symbols, unit=unit)
+
+    def table(self) -> DHTable:
+        """The DH table in the seeds' column order θ, d, a, α (angles in degrees)."""
+        return DHTable(self)
+
+    # --- symbolic: merge joints with parallel axes before multiplying ---------------
+    merges_parallel_joints = True
+
+    def _sym_blocks(self):
+        """Link matrices, with each run of revolute joints about parallel axes
+        (α = 0 between them) written as one block in the sums of their angles."""
+        blocks, i = [], 0
+        while i < self.n:
+            j = i
+            while (j + 1 < self.n and self.links[j].is_revolute and self.links[j + 1].is_revolute
+                   and exact_angle(self.links[j].alpha) == 0):
+                j += 1
+            blocks.append(self._run_block(i, j) if j > i else self.link_matrices_sym()[i])
+            i = j + 1
+        return blocks
+
+    def _run_block(self, first: int, last: int):
+        """A_first ··· A_last for revolute links whose α are 0 except the last one's:
+        [Rz(φ_last)·Rx(α_last) | (Σ a_j cos φ_j, Σ a_j sin φ_j, Σ d_j)], φ_j the partial sums."""
+        phi, p = 0, sp.zeros(3, 1)
+        for k in range(first, last + 1):
+            link = self.links[k]
+            phi = phi + self.q_symbols[k] + exact_angle(link.offset)
+            a, d = exact_length(link.a), exact_length(link.d)
+            p += sp.Matrix([a * sp.cos(phi), a * sp.sin(phi), d])
+        block = Rz(phi) * Rx(exact_angle(self.links[last].alpha))
+        block[:3, 3] = p
+        return block
+
+    # --- tables typed from slides ---------------------------------------------------
+    @classmethod
+    def from_table(cls, rows, name: str = "robot", params=None, angles: str = "deg",
+                   qlim=None, **kwargs) -> "DHRobot":
+        """A robot from rows ``(θ, d, a, α)`` typed as on the slides.
+
+        Entries are numbers or text such as ``"q2 + 90"``, ``"θ3 - 90"``, ``"l1"``,
+        ``"-l2"``. Angles are in **degrees** by default (``angles="rad"`` for
+        radians). In each row the joint variable is the symbol in θ (revolute) or,
+        if θ has none, the symbol in d that ``params`` does not give (prismatic).
+        ``params`` gives the numbers of the other symbols, e.g. ``{"l1": 1}``;
+        ``qlim`` one (low, high) per row, in the table's angle unit for revolute joints.
+        """
+        if angles not in ("deg", "rad"):
+            raise DHLabError(f"angles must be 'deg' or 'rad', got {angles!r}.")
+        params = dict(params or {})
+        links, symbols = [], []
+        for i, row in enumerate(rows, start=1):
+            if len(row) != 4:
+                raise DHLabError(f"row {i} must have 4 entries (θ, d, a, α), got {len(row)}: {row!r}.")
+            theta, d, a, alpha = (_parse(v, f"row {i}") for v in row)
+            limits = None if qlim is None else tuple(qlim[i - 1])
+            to_rad = (lambda e: e * sp.pi / 180) if angles == "deg" else (lambda e: e)
+            q = _joint_symbol(theta, params)
+            if q is not None:
+                offset = to_rad(_offset(theta, q, f"row {i}, θ"))
+                if limits is not None and angles == "deg":
+                    limits = tuple(np.radians(limits))
+                links.append(RevoluteDH(d=d, a=a, alpha=to_rad(alpha), offset=offset, qlim=limits))
+            else:
+                q = _joint_symbol(d, params)
+                if q is None:
+                    raise DHLabError(
+                        f"row {i} {row!r} has no joint variable: θ (revolute) or d (prismatic) must "
+                        "contain a symbol such as q{i} that params does not give a value."
+                    )
+                links.append(PrismaticDH(theta=to_rad(theta), a=a, alpha=to_rad(alpha),
+                                         offset=_offset(d, q, f"row {i}, d"), qlim=limits))
+            symbols.append(str(q))
+        return cls(links, name=name, params=params, joint_symbols=symbols, **kwargs)
+
+
+def _parse(value, where: str):
+    if isinstance(value, (int, float, np.integer, np.floating)):
+        return sp.nsimplify(value) if float(value).is_integer() else sp.Float(float(value))
+    if isinstance(value, sp.Basic):
+        return value
+    text = str(value).replace("θ", "theta").replace("−", "-").replace("°", "").replace("º", "")
+    text = re.sub(r"\s+", " ", text).strip()
+    try:
+        return sp.sympify(text, locals={name: sp.Symbol(name) for name in re.findall(r"[A-Za-z_]\w*", text)})
+    except (sp.SympifyError, SyntaxError, TypeError):
+        raise DHLabError(f"{where}: cannot read {value!r} as a number or an expression like 'q2 + 90'.") from None
+
+
+def _joint_symbol(expr, params):
+    free = [s for s in expr.free_symbols if str(s) not in params]
+    if len(free) > 1:
+        raise DHLabError(f"{expr} has several unknown symbols {sorted(map(str, free))}: give the constant "
+                         "ones in params (e.g. params={'l1': 1.0}) so the joint variable is clear.")
+    return free[0] if free else None
+
+
+def _offset(expr, q, where: str):
+    offset = sp.expand(expr - q)
+    if offset.has(q):
+        raise DHLabError(f"{where}: the joint variable must appear as '+{q}', got {expr}.")
+    return offset

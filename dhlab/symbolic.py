@@ -1,0 +1,156 @@
+"""Symbolic kinematics the way the slides print it: C1 = cos q1, S23 = sin(q2 + q3).
+
+Two ideas make the symbolic product both fast and compact:
+
+1. **Exact constants.** A twist of 90° typed as ``deg(90)`` is the float
+   1.5707963...; sympy would print ``6.1e-17`` for its cosine. :func:`exact`
+   turns such floats back into ``pi/2`` (and lengths like 2.5 into 5/2).
+2. **No trigonometric simplification at all.** Joints whose axes are parallel
+   (DH α = 0) are merged *before* multiplying: their product is written
+   directly with the sums of angles (see ``DHRobot``). Every remaining cos/sin
+   is then a plain symbol, each appears in one factor only, so the product is
+   a polynomial that needs no simplifying, only a choice of the shortest
+   layout (nested as multiplied, or expanded) per entry. Element-wise
+   ``sympy.simplify`` searches for what this construction knows in advance.
+
+>>> import sympy as sp
+>>> q1, q2 = sp.symbols("q1 q2")
+>>> compact(sp.Matrix([[sp.cos(q1 + q2), sp.sin(q1)]]), (q1, q2))
+Matrix([[C12, S1]])
+"""
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import sympy as sp
+from sympy.simplify.fu import TR10i
+
+__all__ = ["exact", "exact_angle", "exact_length", "simplify_chain", "compact", "legend", "count_ops"]
+
+GREEK = {"theta": "θ", "alpha": "α", "phi": "φ", "psi": "ψ", "beta": "β", "gamma": "γ"}
+_NICE = [(sp.Integer(0), 0.0), (sp.Integer(1), 1.0), (sp.Rational(1, 2), 0.5),
+         (sp.sqrt(2) / 2, math.sqrt(2) / 2), (sp.sqrt(3) / 2, math.sqrt(3) / 2)]
+
+
+def exact_angle(value):
+    """A radian value as an exact multiple of π when it is a whole number of degrees."""
+    if isinstance(value, sp.Basic):
+        return value
+    degrees = math.degrees(float(value))
+    if abs(degrees - round(degrees)) < 1e-9:
+        return sp.Rational(round(degrees), 180) * sp.pi
+    return sp.Float(float(value))
+
+
+def exact_length(value):
+    """A number as a small fraction when it is one (2.5 -> 5/2), else a float."""
+    if isinstance(value, sp.Basic):
+        return value
+    frac = Fraction(float(value)).limit_denominator(100)
+    if abs(float(frac) - float(value)) < 1e-12:
+        return sp.Rational(frac.numerator, frac.denominator)
+    return sp.Float(float(value))
+
+
+def _snap(x: sp.Float):
+    """A matrix entry like 6.1e-17 or 0.7071067811865476 -> 0 or sqrt(2)/2."""
+    v = float(x)
+    for exact_value, approx in _NICE:
+        if abs(abs(v) - approx) < 1e-12:
+            return exact_value if v >= 0 else -exact_value
+    return exact_length(v)
+
+
+def exact(M):
+    """``M`` (a sympy Matrix or expression) with near-exact floats made exact."""
+    def fix(e):
+        e = sp.sympify(e)
+        floats = e.atoms(sp.Float)
+        return e.xreplace({f: _snap(f) for f in floats}) if floats else e
+    return M.applyfunc(fix) if isinstance(M, sp.MatrixBase) else fix(M)
+
+
+def count_ops(M) -> int:
+    """Operation count of a matrix or expression (sympy.count_ops summed over entries)."""
+    if isinstance(M, sp.MatrixBase):
+        return sum(sp.count_ops(e) for e in M)
+    return sp.count_ops(M)
+
+
+def _joint_trig(expr, q_symbols) -> set:
+    qs = set(q_symbols)
+    return {f for f in expr.atoms(sp.cos, sp.sin) if f.free_symbols & qs}
+
+
+def simplify_chain(blocks, base, tool, q_symbols, sum_angles: bool = False):
+    """Compact product ``base · blocks[0] ··· blocks[-1] · tool`` (sympy matrices).
+
+    The blocks should already carry the sums of angles of parallel joints (so
+    each cos/sin of a joint angle appears in one block only); the product is
+    then formed on plain symbols and each entry laid out in its shortest form.
+    ``sum_angles=True`` also collapses ``C1·C2 − S1·S2`` into ``C12`` afterwards,
+    with sympy's targeted rule TR10i: for small chains not written in DH form.
+    """
+    trig = set()
+    for B in blocks:
+        for e in B:
+            trig |= _joint_trig(e, q_symbols)
+    placeholder = {f: sp.Dummy() for f in sorted(trig, key=sp.default_sort_key)}
+    back = {v: k for k, v in placeholder.items()}
+    T = base
+    for B in blocks:
+        T = T * B.xreplace(placeholder)
+    T = (T * tool).xreplace(back)
+    if sum_angles:
+        T = T.applyfunc(lambda e: TR10i(sp.expand(e)))
+    return T.applyfunc(_shortest)
+
+
+def _shortest(e):
+    """The shortest of an entry's layouts: as multiplied, expanded, or with common factors out."""
+    expanded = sp.expand(e)
+    return min((e, expanded, sp.factor_terms(expanded)), key=sp.count_ops)
+
+
+def _index(symbol) -> str:
+    """The label of a joint symbol in C/S names: q12 -> '12', theta0 -> '0', theta -> 'θ'."""
+    digits = "".join(ch for ch in str(symbol) if ch.isdigit())
+    return digits or GREEK.get(str(symbol), str(symbol))
+
+
+def _compact_name(f, q_symbols):
+    """cos(q2 + q3) -> 'C23'; None when the argument is not a plain sum of joints."""
+    arg = f.args[0]
+    terms = sp.Add.make_args(arg)
+    if not all(t in q_symbols for t in terms):
+        return None
+    order = sorted(terms, key=q_symbols.index)
+    labels = [_index(t) for t in order]
+    joiner = "," if any(len(l) > 1 for l in labels) else ""
+    return ("C" if isinstance(f, sp.cos) else "S") + joiner.join(labels)
+
+
+def compact(M, q_symbols):
+    """Replace cos/sin of (sums of) joint variables by the slides' C1, S23, C345 ….
+
+    The result is for reading: its symbols are names, not functions.
+    """
+    q_symbols = tuple(q_symbols)
+    M = sp.sympify(M)
+    atoms = set()
+    for e in (M if isinstance(M, sp.MatrixBase) else [M]):
+        atoms |= _joint_trig(e, q_symbols)
+    names = {f: _compact_name(f, q_symbols) for f in atoms}
+    return M.xreplace({f: sp.Symbol(n) for f, n in names.items() if n})
+
+
+def legend(M, q_symbols) -> str:
+    """The definitions behind :func:`compact`'s names, e.g. 'C1 = cos(q1), S23 = sin(q2 + q3)'."""
+    q_symbols = tuple(q_symbols)
+    atoms = set()
+    for e in (M if isinstance(M, sp.MatrixBase) else [M]):
+        atoms |= _joint_trig(sp.sympify(e), q_symbols)
+    named = sorted(((_compact_name(f, q_symbols), f) for f in atoms if _compact_name(f, q_symbols)),
+                   key=lambda t: (len(t[0]), t[0][1:], t[0][0]))
+    return ", ".join(f"{n} = {f}" for n, f in named)

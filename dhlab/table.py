@@ -1,0 +1,79 @@
+"""Display of a DH table in the seeds' column order θ, d, a, α, angles in degrees.
+
+Joint variables appear as on the slides, with their offset: ``q2 + 90°``.
+A table renders as HTML in Jupyter and as aligned text in a terminal.
+"""
+from __future__ import annotations
+
+import html
+import math
+
+import sympy as sp
+
+__all__ = ["DHTable", "format_angle", "format_length"]
+
+
+def _number(v: float) -> str:
+    text = f"{v:.6g}"
+    return "0" if text in ("-0", "0") else text
+
+
+def format_angle(value) -> str:
+    """An angle (radians, number or sympy) as degrees: pi/2 -> '90°'."""
+    if isinstance(value, sp.Basic) and value.free_symbols:
+        return str(sp.nsimplify(value * 180 / sp.pi)) + "°"
+    return _number(math.degrees(float(value))) + "°"
+
+
+def format_length(value) -> str:
+    """A length (number or sympy expression) as text: 2.5 -> '2.5', -l2 -> '-l2'."""
+    if isinstance(value, sp.Basic) and value.free_symbols:
+        return str(value)
+    return _number(float(value))
+
+
+def _with_offset(var: str, offset: str) -> str:
+    """'q2', '90°' -> 'q2 + 90°'; '-90°' -> 'q2 − 90°'; '0' -> 'q2'."""
+    if offset in ("0°", "0"):
+        return var
+    if offset.startswith("-"):
+        return f"{var} − {offset[1:]}"
+    return f"{var} + {offset}"
+
+
+class DHTable:
+    """The DH table of a :class:`~dhlab.DHRobot`, for display (``print`` or Jupyter)."""
+
+    header = ("i", "θ", "d", "a", "α", "joint")
+
+    def __init__(self, robot):
+        self.robot = robot
+        self.rows = [self._row(i, link, label) for i, (link, label)
+                     in enumerate(zip(robot.links, robot.joint_labels), start=1)]
+
+    @staticmethod
+    def _row(i, link, label):
+        if link.is_revolute:
+            theta = _with_offset(label, format_angle(link.offset))
+            d = format_length(link.d)
+        else:
+            theta = format_angle(link.theta)
+            d = _with_offset(label, format_length(link.offset))
+        return (str(i), theta, d, format_length(link.a), format_angle(link.alpha),
+                "R" if link.is_revolute else "P")
+
+    def __str__(self) -> str:
+        cells = [self.header] + self.rows
+        widths = [max(len(r[c]) for r in cells) for c in range(len(self.header))]
+        lines = [" | ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in cells]
+        return "\n".join(" " + line for line in lines)
+
+    def __repr__(self) -> str:
+        return f"DH table of {self.robot.name!r}:\n{self}"
+
+    def _repr_html_(self) -> str:
+        head = "".join(f"<th>{html.escape(h)}</th>" for h in self.header)
+        body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in row) + "</tr>"
+                       for row in self.rows)
+        caption = html.escape(f"DH table of {self.robot.name} (angles in degrees)")
+        return f"<table><caption>{caption}</caption><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
