@@ -4,8 +4,8 @@ Angles are radians in the API (``deg(30)`` converts), lengths in the robot's uni
 
 >>> import dhlab
 >>> puma = dhlab.robots.puma560()
->>> puma.fk(puma.qz).round(4)[:3, 3].tolist()
-[0.4521, -0.1501, 0.4318]
+>>> puma.fk(puma.qz).round(5)[:3, 3].tolist()
+[0.4521, -0.15005, 0.4318]
 """
 from . import ik, robots, symbolic, transforms
 from .chain import Link, Move, Robot, Rot

@@ -6,13 +6,16 @@ derivations and the numbers::
 
     >>> import sympy as sp
     >>> from dhlab.transforms import Rz, trans
-    >>> th = sp.Symbol("theta")
-    >>> Rz(th) * trans(1, 0, 0)          # rotate, then move along the new x
+    >>> th, l = sp.symbols("theta l")
+    >>> Rz(th) * trans(l, 0, 0)          # rotate, then move along the new x
     Matrix([
-    [cos(theta), -sin(theta), 0, cos(theta)],
-    [sin(theta),  cos(theta), 0, sin(theta)],
-    [         0,            0, 1,          0],
-    [         0,            0, 0,          1]])
+    [cos(theta), -sin(theta), 0, l*cos(theta)],
+    [sin(theta),  cos(theta), 0, l*sin(theta)],
+    [         0,            0, 1,            0],
+    [         0,            0, 0,            1]])
+
+With only numbers the result is a float numpy array; mixing it into a sympy
+product brings floats (1.0) in: keep at least one symbol, or use sympy numbers.
 
 Angles are radians (use ``dhlab.deg(30)`` for degrees). A numeric angle of
 more than one full turn is refused: it is almost always degrees by mistake.
@@ -187,7 +190,7 @@ def rpy(T):
 
     >>> import numpy as np
     >>> np.round(np.degrees(rpy(Rz(0.5) @ Ry(0.2) @ Rx(-0.1))), 6).tolist()
-    [-5.729578, 11.459156, 28.647890]
+    [-5.729578, 11.459156, 28.64789]
     """
     R = np.asarray(T, dtype=float)[:3, :3]
     pitch = math.atan2(-R[2, 0], math.hypot(R[0, 0], R[1, 0]))

@@ -1,0 +1,47 @@
+"""Execute notebooks in place, in this Python environment, with a finite time limit.
+
+Used by ``make notebooks`` so that stored outputs are exactly what the code
+computes (nbval then re-executes them under ``make test`` and compares)::
+
+    python -m dhlab.execute notebooks/*.ipynb
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+__all__ = ["execute_notebook", "main"]
+
+
+def execute_notebook(path, timeout: int = 300, kernel_name: str = "python3") -> None:
+    """Run every cell of ``path`` in a fresh kernel and save the outputs in place.
+
+    Each cell has ``timeout`` seconds (never unlimited: a widget callback that
+    waits forever must fail the build, not hang it).
+    """
+    import nbformat
+    from nbclient import NotebookClient
+
+    path = Path(path)
+    nb = nbformat.read(path, as_version=4)
+    client = NotebookClient(nb, timeout=timeout, kernel_name=kernel_name,
+                            resources={"metadata": {"path": str(path.parent)}})
+    client.execute()
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3 (dhlab)", "language": "python"}
+    nbformat.write(nb, path)
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("notebooks", nargs="+", type=Path)
+    parser.add_argument("--timeout", type=int, default=300, help="seconds per cell (default 300)")
+    args = parser.parse_args(argv)
+    for path in args.notebooks:
+        print(f"executing {path} ...", flush=True)
+        execute_notebook(path, timeout=args.timeout)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
