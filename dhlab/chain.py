@@ -24,7 +24,7 @@ import numpy as np
 import sympy as sp
 
 from . import kinematics
-from .symbolic import exact, exact_angle, exact_length, simplify_chain
+from .symbolic import compact, exact, exact_angle, exact_length, legend, simplify_chain
 from .transforms import Rx, Ry, Rz, trans
 from .validation import DHLabError, as_matrix4, check_joint_values, rigid_problem
 
@@ -151,7 +151,7 @@ class Robot:
             raise DHLabError("a robot needs at least one link.")
         self.name = name
         self.unit = unit
-        self.params = {str(k): float(v) for k, v in (params or {}).items()}
+        self.params = _numeric_params(params)
         self.base = self._fixed_transform(base, "base")
         self.tool = self._fixed_transform(tool, "tool")
         names = joint_symbols or [f"q{i + 1}" for i in range(self.n)]
@@ -289,9 +289,31 @@ class Robot:
 
     merges_parallel_joints = False   # DHRobot writes parallel joints' angle sums directly
 
+    def compact(self, M):
+        """``M`` in the slides' notation for this robot's joints: C1, S23, … (for reading)."""
+        return compact(M, self.q_symbols)
+
+    def legend(self, M) -> str:
+        """What the names in ``compact(M)`` stand for, e.g. 'C1 = cos(q1), S23 = sin(q2 + q3)'."""
+        return legend(M, self.q_symbols)
+
     def _sym_blocks(self):
         """The matrices to multiply for the compact form: here, one per link."""
         return self.link_matrices_sym()
+
+
+def _numeric_params(params) -> dict:
+    """Robot parameters as {name: float}, refusing anything that is not a finite number."""
+    out = {}
+    for key, value in dict(params or {}).items():
+        try:
+            number = float(value)
+        except (TypeError, ValueError):
+            number = float("nan")
+        if not np.isfinite(number):
+            raise DHLabError(f"parameter {key} = {value!r} must be a finite number (a length or an angle in radians).")
+        out[str(key)] = number
+    return out
 
 
 def _label(symbol) -> str:

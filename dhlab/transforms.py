@@ -192,7 +192,7 @@ def rpy(T):
     >>> np.round(np.degrees(rpy(Rz(0.5) @ Ry(0.2) @ Rx(-0.1))), 6).tolist()
     [-5.729578, 11.459156, 28.64789]
     """
-    R = np.asarray(T, dtype=float)[:3, :3]
+    R = check_rigid(T, "T")[:3, :3]
     pitch = math.atan2(-R[2, 0], math.hypot(R[0, 0], R[1, 0]))
     if math.isclose(abs(pitch), math.pi / 2, abs_tol=1e-9):
         return 0.0, pitch, math.atan2(-R[0, 1], R[1, 1])

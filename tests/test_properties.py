@@ -43,9 +43,12 @@ def test_frames_are_rigid_and_chain_to_fk(robot):
             np.testing.assert_allclose(F[i - 1] @ robot.A(i, q[i - 1]), F[i], atol=1e-12)
 
 
-def test_dh_fk_is_product_of_dh_matrices(robot):
-    if not isinstance(robot, dhlab.DHRobot):
-        pytest.skip("not a DH robot")
+DH_ROBOTS = sorted(name for name, f in CATALOGUE.items() if isinstance(f(), dhlab.DHRobot))
+
+
+@pytest.mark.parametrize("name", DH_ROBOTS)
+def test_dh_fk_is_product_of_dh_matrices(name):
+    robot = CATALOGUE[name]()
     for q in random_q(robot, 20):
         T = robot.base.copy()
         for link, qi in zip(robot.links, q):

@@ -99,6 +99,13 @@ def test_bad_robot_definitions():
         dhlab.DHRobot([dhlab.RevoluteDH()], joint_symbols=["a", "b"])
 
 
+def test_bad_parameters_and_poses():
+    with pytest.raises(DHLabError, match="parameter l1 = 'long' must be a finite number"):
+        robots.seed003_6dof(l1="long")
+    with pytest.raises(DHLabError, match="not a proper rigid transform"):
+        dhlab.rpy(np.diag([1.0, 1, -1, 1]))
+
+
 def test_ik_unreachable_is_a_message_not_a_crash():
     sols = dhlab.ik.pr_mechanism_ik(robots.pr_mechanism(), 2.0, 0.6)
     assert sols == [] and "no solution" in sols.message and "0.6 > l2 = 0.5" in sols.message
