@@ -18,6 +18,7 @@ same forward-kinematics code (:mod:`dhlab.kinematics`).
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -152,13 +153,38 @@ class Robot:
         self.name = name
         self.unit = unit
         self.params = _numeric_params(params)
-        self.base = self._fixed_transform(base, "base")
-        self.tool = self._fixed_transform(tool, "tool")
         names = joint_symbols or [f"q{i + 1}" for i in range(self.n)]
         if len(names) != self.n:
             raise DHLabError(f"joint_symbols must name {self.n} joints, got {len(names)}: {list(names)}.")
         self.q_symbols = tuple(sp.Symbol(str(s), real=True) for s in names)
-        self._program = kinematics.compile_chain(self._numeric_factors(), self.base, self.tool)
+        self._numeric = self._numeric_factors()
+        self._base = self._fixed_transform(base, "base")
+        self._tool = self._fixed_transform(tool, "tool")
+        self._compile()
+
+    # --- base and tool: checked, and the kinematics recompiled when they change ---
+    @property
+    def base(self) -> np.ndarray:
+        """Pose of frame 0 in the world (4x4)."""
+        return self._base
+
+    @base.setter
+    def base(self, T):
+        self._base = self._fixed_transform(T, "base")
+        self._compile()
+
+    @property
+    def tool(self) -> np.ndarray:
+        """Pose of the end effector in frame n (4x4)."""
+        return self._tool
+
+    @tool.setter
+    def tool(self, T):
+        self._tool = self._fixed_transform(T, "tool")
+        self._compile()
+
+    def _compile(self):
+        self._program = kinematics.compile_chain(self._numeric, self._base, self._tool)
 
     # --- construction helpers ------------------------------------------------
     @staticmethod
@@ -243,20 +269,20 @@ class Robot:
         values[i - 1] = q
         value = check_joint_values(values, self.links)[i - 1]
         M = np.eye(4)
-        for kind, axis, const, joint, sign in self._numeric_factors()[i - 1]:
+        for kind, axis, const, joint, sign in self._numeric[i - 1]:
             M = M @ kinematics.elementary(kind, axis, const + sign * value if joint else const)
         return M
 
     def reach(self) -> float:
         """An upper bound on how far any frame origin gets from frame 0's origin."""
         total = np.linalg.norm(self.tool[:3, 3])
-        for link, factors in zip(self.links, self._numeric_factors()):
+        for link, factors in zip(self.links, self._numeric):
             for kind, _, const, joint, _ in factors:
                 if kind == "T":
                     total += abs(const) + (max(abs(v) for v in link.qlim) if joint else 0.0)
         return float(total)
 
-    @property
+    @functools.cached_property
     def is_planar(self) -> bool:
         """True when every frame origin stays in the base xy plane (checked at random poses)."""
         rng = np.random.default_rng(0)

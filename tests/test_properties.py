@@ -127,3 +127,16 @@ def test_compared_with_an_independent_textbook_implementation():
             T = T @ np.array([[ct, -st * ca, st * sa, p[2] * ct], [st, ct * ca, -ct * sa, p[2] * st],
                               [0, sa, ca, d], [0, 0, 0, 1]])
         np.testing.assert_allclose(robot.fk(q), T @ robot.tool, atol=1e-12)
+
+
+def test_changing_base_or_tool_changes_fk():
+    robot = robots.puma560()
+    q = random_q(robot, 1)[0]
+    before = robot.fk(q)
+    robot.tool = trans(0, 0, 0.1)
+    np.testing.assert_allclose(robot.fk(q), before @ trans(0, 0, 0.1), atol=1e-12)
+    robot.base = Rz(0.5)
+    np.testing.assert_allclose(robot.fk(q), Rz(0.5) @ before @ trans(0, 0, 0.1), atol=1e-12)
+    np.testing.assert_allclose(robot.frames(q)[0], Rz(0.5), atol=1e-12)
+    with pytest.raises(dhlab.DHLabError, match="tool transform is not a proper rigid transform"):
+        robot.tool = np.diag([1.0, 1, -1, 1])
