@@ -24,3 +24,17 @@ __all__ = [
     "dh_from_axes", "dh_assignment", "joint_axes", "DHAssignment", "assign",
 ]
 __version__ = "0.1.0"
+
+# The interactive views load matplotlib's 3D toolkit and ipywidgets: imported on
+# first use, so that the maths (and the grader) start fast without them.
+_VIEWS = {"teach": "teach", "robot_view": "view", "stepthrough": "stepthrough",
+          "stepthrough_link": "stepthrough", "spaces": "spaces", "view": None}
+__all__ += list(_VIEWS)
+
+
+def __getattr__(name):
+    if name not in _VIEWS:
+        raise AttributeError(f"module 'dhlab' has no attribute {name!r}")
+    import importlib
+    module = importlib.import_module(f".{_VIEWS[name] or name}", __name__)
+    return module if _VIEWS[name] is None else getattr(module, name)

@@ -10,8 +10,10 @@ A view draws, for a joint vector ``q``:
   labelled ``{E}``, when the robot has a tool transform).
 
 ``view.update(q)`` only moves these artists: it never clears the axes or makes
-a new figure, and the axis limits come from the robot's reach, so the picture
-does not jump while the robot moves.
+a new figure, and the axis limits are fixed from the robot's workspace (see
+:func:`workspace_box`), so the picture does not jump while the robot moves.
+Only the moving artists are redrawn, over a cached picture of the axes
+(:mod:`dhlab.livefigure`): a few milliseconds per update.
 
 >>> import dhlab
 >>> robot = dhlab.robots.ssrms()
@@ -31,12 +33,12 @@ from mpl_toolkits.mplot3d import proj3d
 from .livefigure import LiveFigure
 
 __all__ = ["RobotView", "RobotView3D", "RobotView2D", "robot_view", "triad_segments",
-           "FrameLabels", "FrameLabels3D", "AXIS_COLORS", "default_q", "workspace_radius"]
+           "FrameLabels", "FrameLabels3D", "AXIS_COLORS", "default_q", "workspace_box"]
 
 AXIS_COLORS = ("tab:red", "tab:green", "tab:blue")    # x, y, z
 LINK_COLOR = "0.25"
 EE_COLOR = "darkorange"
-TRIAD_FRACTION = 0.1        # triad length as a fraction of the workspace radius
+TRIAD_FRACTION = 0.06       # triad length as a fraction of the workspace's longest side
 
 
 def default_q(robot) -> np.ndarray:
@@ -45,22 +47,29 @@ def default_q(robot) -> np.ndarray:
     return np.clip(np.zeros(robot.n), lo, hi)
 
 
-def workspace_radius(robot, samples: int = 500) -> float:
-    """How far from the base the frame origins get: the largest distance seen
-    at ``samples`` random poses within the joint limits, plus a 10 % margin,
-    and never more than ``robot.reach()`` (a guaranteed but often loose bound).
+def workspace_box(robot, samples: int = 500) -> tuple:
+    """Fixed axis limits (lo, hi), each of shape (3,), that the robot does not leave.
 
-    The views use it for fixed axis limits that fit the robot snugly.
+    The box holds every frame origin seen at ``samples`` random poses within
+    the joint limits, plus a margin; no side is shorter than a quarter of the
+    longest (a planar robot still gets some depth) and it never extends past
+    the guaranteed bound ``robot.reach()`` around the base.
     """
-    rng = np.random.default_rng(0)                     # same limits every time
-    lo, hi = np.array([link.qlim for link in robot.links], dtype=float).T
-    poses = lo + (hi - lo) * rng.random((samples, robot.n))
+    rng = np.random.default_rng(0)                     # the same limits every time
+    qlo, qhi = np.array([link.qlim for link in robot.links], dtype=float).T
+    poses = qlo + (qhi - qlo) * rng.random((samples, robot.n))
     frames = np.asarray(robot.frames(poses), dtype=float)
     if not np.allclose(np.asarray(robot.tool, dtype=float), np.eye(4)):
         frames = np.concatenate([frames, np.asarray(robot.fk(poses), dtype=float)[:, None]], axis=1)
-    base = frames[0, 0, :3, 3]
-    seen = np.linalg.norm(frames[..., :3, 3] - base, axis=-1).max()
-    return float(min(1.1 * seen, robot.reach())) or 1.0
+    points = frames[..., :3, 3].reshape(-1, 3)
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    longest = max(float((hi - lo).max()), 1e-9)
+    center = (lo + hi) / 2
+    half = np.maximum((hi - lo) / 2 + 0.1 * longest, 0.125 * longest)
+    base, reach = frames[0, 0, :3, 3], float(robot.reach())
+    lo = np.maximum(center - half, base - reach)
+    hi = np.minimum(center + half, base + reach)
+    return lo, hi
 
 
 def triad_segments(frames: np.ndarray, length: float) -> list:
@@ -90,29 +99,63 @@ class FrameLabels(PathCollection):
     Why not one ``Text`` per frame: Agg renders a ``Text`` glyph by glyph on
     every draw (about 0.8 ms each, 6 ms for the SSRMS's 8 frames); one
     collection of ready-made outlines draws all of them in about 0.3 ms.
+    Labels of frames that share an origin (a spherical wrist) are stacked
+    one under the other instead of printed on top of each other.
     """
 
     def __init__(self, ax, names, fontsize: float = 9, color="k", alpha: float = 1.0):
-        paths = [TextPath((0, 0), name, size=fontsize) for name in names]
-        super().__init__(paths, offsets=np.zeros((len(names), 2)), offset_transform=ax.transData,
-                         facecolors=color, edgecolors="none", alpha=alpha)
+        self.names, self.fontsize = list(names), fontsize
+        super().__init__(self._outlines([0] * len(names)), offsets=np.zeros((len(names), 2)),
+                         offset_transform=ax.transData, facecolors=color, edgecolors="none",
+                         alpha=alpha)
         # outlines are in points: 1/72 inch, then the figure's inches -> pixels
         self.set_transform(Affine2D().scale(1 / 72) + ax.figure.dpi_scale_trans)
         ax.add_collection(self, autolim=False)
 
-    def set_points(self, points) -> None:
+    def _outlines(self, rows):
+        # up-right of the point, row k lines lower
+        return [_text_outline(name, self.fontsize, row) for name, row in zip(self.names, rows)]
+
+    def set_points(self, points, tol: float = 1e-9) -> None:
         """Place label i at ``points[i]`` (data coordinates)."""
-        self.set_offsets(np.asarray(points, dtype=float))
+        points = np.asarray(points, dtype=float)
+        self._place_offsets(points)
+        self.set_paths(self._outlines(_rows_of_shared_points(points, tol)))
+
+    def _place_offsets(self, points):
+        self.set_offsets(points)
 
     def get_points(self) -> np.ndarray:
         return np.asarray(self.get_offsets(), dtype=float)
 
 
+def _rows_of_shared_points(points, tol):
+    """For each point, how many earlier points are at the same place."""
+    rows = []
+    for i, p in enumerate(points):
+        rows.append(int(np.sum(np.linalg.norm(points[:i] - p, axis=1) <= tol)))
+    return rows
+
+
+_outline_cache: dict = {}
+
+
+def _text_outline(name, fontsize, row):
+    key = (name, fontsize, row)
+    if key not in _outline_cache:
+        _outline_cache[key] = TextPath((4, 3 - 1.25 * fontsize * row), name, size=fontsize)
+    return _outline_cache[key]
+
+
 class FrameLabels3D(FrameLabels):
     """:class:`FrameLabels` at 3D points, projected with the axes' current view."""
 
-    def set_points(self, points) -> None:
-        self._points3d = np.asarray(points, dtype=float)
+    def __init__(self, ax, names, **style):
+        self._points3d = np.zeros((len(names), 3))
+        super().__init__(ax, names, **style)
+
+    def _place_offsets(self, points):
+        self._points3d = points
 
     def get_points(self) -> np.ndarray:
         return self._points3d
@@ -134,16 +177,20 @@ class RobotView:
     Subclasses make the artists (``_make_artists``) and move them (``_place``).
     """
 
+    projection = None          # matplotlib projection of the axes: None (2D) or "3d"
+
     def __init__(self, robot, q=None, *, ax=None, live: LiveFigure | None = None,
                  triads: bool = True, labels: bool = True, color=LINK_COLOR,
-                 alpha: float = 1.0, figsize=(6, 6), backend: str = "auto"):
+                 alpha: float = 1.0, figsize=None, backend: str = "auto"):
         self.robot = robot
-        self.radius = workspace_radius(robot)
-        self.triad_length = TRIAD_FRACTION * self.radius
+        self.box = workspace_box(robot)
+        self.triad_length = TRIAD_FRACTION * float((self.box[1] - self.box[0]).max())
         self.has_tool = not np.allclose(np.asarray(robot.tool, dtype=float), np.eye(4))
         if ax is None:
-            live = live or LiveFigure(figsize=figsize, backend=backend)
-            ax = self._new_axes(live.figure)
+            live = live or LiveFigure(figsize=figsize or self._figsize(), backend=backend)
+            ax = live.figure.add_subplot(projection=self.projection)
+            self.setup_axes(ax)
+            self._fit(live.figure)
         self.ax, self.live = ax, live
         self.show_triads, self.show_labels = triads, labels
         self.artists = self._make_artists(color, alpha)
@@ -173,6 +220,7 @@ class RobotView:
 
     @property
     def figure(self):
+        """The matplotlib Figure the view draws in."""
         return self.ax.figure
 
     @property
@@ -186,7 +234,15 @@ class RobotView:
         return self.live.widget._repr_mimebundle_(**kwargs)
 
     # --- what subclasses provide ------------------------------------------------
-    def _new_axes(self, figure):
+    def _figsize(self):
+        return (6, 6)
+
+    def _fit(self, figure) -> None:
+        """Fill a figure that holds only this view."""
+
+    def setup_axes(self, ax) -> None:
+        """Limits, labels and aspect of the axes (called for axes the view makes;
+        call it yourself for axes you give it)."""
         raise NotImplementedError
 
     def _make_artists(self, color, alpha) -> list:
@@ -201,19 +257,19 @@ class RobotView:
 
 
 class RobotView3D(RobotView):
-    """The robot in a 3D axes with equal scaling (a cube around the base that the robot cannot leave)."""
+    """The robot in a 3D axes with equal scaling, in a fixed box it cannot leave."""
 
-    def _new_axes(self, figure):
-        ax = figure.add_subplot(projection="3d")
-        center = np.asarray(self.robot.frames(default_q(self.robot)), dtype=float)[0, :3, 3]
-        r = self.radius
-        ax.set(xlim=(center[0] - r, center[0] + r), ylim=(center[1] - r, center[1] + r),
-               zlim=(center[2] - r, center[2] + r), xlabel=self._axis_label("x"),
+    projection = "3d"
+
+    def setup_axes(self, ax):
+        (x0, y0, z0), (x1, y1, z1) = self.box
+        ax.set(xlim=(x0, x1), ylim=(y0, y1), zlim=(z0, z1), xlabel=self._axis_label("x"),
                ylabel=self._axis_label("y"), zlabel=self._axis_label("z"))
-        ax.set_box_aspect((1, 1, 1))          # equal scaling: a cube looks like a cube
+        ax.set_box_aspect(self.box[1] - self.box[0])   # equal scaling: a cube looks like a cube
         ax.set_title(self.robot.name)
-        figure.subplots_adjust(left=0, right=0.95, bottom=0.02, top=0.95)
-        return ax
+
+    def _fit(self, figure):
+        figure.subplots_adjust(left=0, right=0.92, bottom=0.04, top=0.95)
 
     def _make_artists(self, color, alpha):
         ax = self.ax
@@ -230,10 +286,8 @@ class RobotView3D(RobotView):
         for line, points in zip(self.axis_lines, triad_segments(frames, self.triad_length)):
             line.set_data_3d(*points.T)
         self.ee_marker.set_data_3d(*origins[-1:].T)
-        # Each label sits a little way along its frame's x+y+z diagonal, so
-        # frames that share an origin (e.g. a spherical wrist) stay apart.
         if self.labels:
-            self.labels.set_points(origins + frames[:, :3, :3].sum(axis=2) * (0.3 * self.triad_length))
+            self.labels.set_points(origins, tol=1e-3 * self.triad_length)
 
 
 class RobotView2D(RobotView):
@@ -243,15 +297,19 @@ class RobotView2D(RobotView):
     in its colour (so z is a blue ⊙ for the usual planar robot).
     """
 
-    def _new_axes(self, figure):
-        ax = figure.add_subplot()
-        center = np.asarray(self.robot.frames(default_q(self.robot)), dtype=float)[0, :3, 3]
-        r = self.radius
-        ax.set(xlim=(center[0] - r, center[0] + r), ylim=(center[1] - r, center[1] + r),
-               xlabel=self._axis_label("x"), ylabel=self._axis_label("y"), aspect="equal",
-               title=self.robot.name)
+    def _figsize(self):
+        # a wide workspace (e.g. the P-R mechanism) gets a wide, short figure
+        width, height = (self.box[1] - self.box[0])[:2]
+        return (6, float(np.clip(6 * height / width + 0.8, 2.5, 6)))
+
+    def setup_axes(self, ax):
+        (x0, y0, _), (x1, y1, _) = self.box
+        ax.set(xlim=(x0, x1), ylim=(y0, y1), xlabel=self._axis_label("x"),
+               ylabel=self._axis_label("y"), aspect="equal", title=self.robot.name)
         ax.grid(True, alpha=0.3)
-        return ax
+
+    def _fit(self, figure):
+        figure.set_layout_engine("tight")
 
     def _make_artists(self, color, alpha):
         ax = self.ax
@@ -278,7 +336,7 @@ class RobotView2D(RobotView):
             self.in_marks[k].set_data(*origins[out_of_page < -0.7].T)
         self.ee_marker.set_data(*origins[-1:].T)
         if self.labels:
-            self.labels.set_points(origins + frames[:, :2, :2].sum(axis=2) * (0.3 * self.triad_length))
+            self.labels.set_points(origins, tol=1e-3 * self.triad_length)
 
 
 def robot_view(robot, q=None, *, planar: bool | None = None, **options) -> RobotView:

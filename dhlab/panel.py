@@ -1,0 +1,161 @@
+"""What every interactive panel shares: joint sliders in display units, errors
+shown to the user, and cleaning up when its notebook cell runs again.
+
+Units (one rule everywhere): a revolute joint's slider is in **degrees**, a
+prismatic joint's slider in the robot's **length unit**; the maths gets
+radians. :func:`slider_to_q` and :func:`q_to_slider` are the only two places
+that convert.
+
+>>> import dhlab
+>>> robot = dhlab.robots.pr_mechanism()
+>>> rows, sliders = joint_sliders(robot, [0.25, dhlab.deg(30)])
+>>> [s.description for s in sliders], [round(s.value, 6) for s in sliders]
+(['q1', 'q2'], [0.25, 30.0])
+>>> slider_to_q(robot, sliders).round(6).tolist()
+[0.25, 0.523599]
+"""
+from __future__ import annotations
+
+import html
+import traceback
+
+import ipywidgets as widgets
+import numpy as np
+
+from .livefigure import LiveFigure, forget_previous_run
+
+__all__ = ["Panel", "joint_sliders", "slider_to_q", "q_to_slider", "unit_of", "checked_start"]
+
+REVOLUTE_STEP_DEG = 0.5
+PRISMATIC_STEPS = 1000         # a prismatic slider's range is cut into this many steps
+
+
+def unit_of(robot, link) -> str:
+    """The display unit of a joint: '°' for revolute, the robot's length unit for prismatic."""
+    if link.is_revolute:
+        return "°"
+    return getattr(robot, "unit", "") or "length"
+
+
+def q_to_slider(link, value: float) -> float:
+    """Joint value (radians or length) -> slider value (degrees or length)."""
+    return float(np.degrees(value)) if link.is_revolute else float(value)
+
+
+def slider_to_q(robot, sliders) -> np.ndarray:
+    """The joint vector (radians / length units) that the sliders show."""
+    return np.array([np.radians(s.value) if link.is_revolute else s.value
+                     for link, s in zip(robot.links, sliders)], dtype=float)
+
+
+def checked_start(robot, q) -> np.ndarray:
+    """``q`` as a float array, refused with a clear message if it has the wrong
+    length or lies outside the joint limits (a slider could not show it)."""
+    q = np.asarray(q, dtype=float)
+    if q.shape != (robot.n,):
+        raise ValueError(f"q must hold {robot.n} joint values (radians for revolute joints, "
+                         f"length for prismatic ones), got shape {q.shape}.")
+    for j, (link, value) in enumerate(zip(robot.links, q)):
+        lo, hi = link.qlim
+        if not lo - 1e-12 <= value <= hi + 1e-12:
+            shown = [f"{q_to_slider(link, v):g}{unit_of(robot, link)}" for v in (value, lo, hi)]
+            raise ValueError(f"q[{j}] = {shown[0]} is outside joint {j + 1}'s limits "
+                             f"[{shown[1]}, {shown[2]}]; start inside them (revolute values in "
+                             "radians: use dhlab.deg(...) for degrees).")
+    return q
+
+
+def joint_sliders(robot, q, labels=None):
+    """One slider per joint, within the joint limits, labelled as the DH table numbers
+    the joints (``robot.joint_labels``). Returns (rows to display, sliders):
+    each row is the slider followed by its unit."""
+    labels = labels or list(getattr(robot, "joint_labels", [f"q{i + 1}" for i in range(robot.n)]))
+    rows, sliders = [], []
+    for link, label, value in zip(robot.links, labels, q):
+        lo, hi = (q_to_slider(link, v) for v in link.qlim)
+        step = REVOLUTE_STEP_DEG if link.is_revolute else (hi - lo) / PRISMATIC_STEPS
+        slider = widgets.FloatSlider(
+            value=float(np.clip(q_to_slider(link, value), lo, hi)), min=lo, max=hi, step=step,
+            description=label, continuous_update=True,
+            readout_format=".1f" if link.is_revolute else ".3f",
+            tooltip=f"{label}: {'revolute, degrees' if link.is_revolute else 'prismatic, length'}",
+            style={"description_width": "3em"}, layout=widgets.Layout(width="330px"))
+        sliders.append(slider)
+        rows.append(widgets.HBox([slider, widgets.Label(unit_of(robot, link))]))
+    return rows, sliders
+
+
+class Panel(widgets.HBox):
+    """A figure on the left, controls on the right; the base of the course's panels.
+
+    ``run(action, *args)`` calls ``action`` and, if it raises, shows the error
+    in red under the controls (and keeps it in ``panel.error``) before raising
+    it again: from a slider drag it would otherwise only reach the browser's
+    log, where nobody sees it.
+    """
+
+    def __init__(self, live: LiveFigure, controls: list):
+        self.live = live
+        self.figure = live.figure
+        self.error = None
+        self.error_box = widgets.HTML(layout=widgets.Layout(max_width="520px"))
+        side = widgets.VBox([*controls, self.error_box],
+                            layout=widgets.Layout(margin="0 0 0 1em"))
+        super().__init__([live.widget, side],
+                         layout=widgets.Layout(flex_flow="row wrap", align_items="flex-start"))
+        forget_previous_run(self)
+
+    def run(self, action, *args):
+        """``action(*args)``, with any error shown in the panel (then raised)."""
+        try:
+            result = action(*args)
+        except Exception as exc:
+            self.error = exc
+            text = "".join(traceback.format_exception(type(exc), exc, exc.__traceback__, limit=-3))
+            self.error_box.value = (
+                '<div style="color:#b00020"><b>Error while updating:</b>'
+                f'<pre style="white-space:pre-wrap;font-size:85%">{html.escape(text)}</pre></div>')
+            raise
+        if self.error is not None:
+            self.error, self.error_box.value = None, ""
+        return result
+
+    def observe_values(self, sliders, callback) -> None:
+        """Call ``callback()`` (through :meth:`run`) whenever one of the sliders moves,
+        from a drag in the browser or from ``slider.value = ...`` in code."""
+        for slider in sliders:
+            slider.observe(lambda change: self.run(callback), names="value")
+
+    def __repr__(self):
+        # short and free of memory addresses: it is the text/plain of the cell's output
+        return f"<dhlab {type(self).__name__}>"
+
+    def close(self):
+        """Close the panel's widgets (with their layouts and styles) and release its figure."""
+        live = getattr(self, "live", None)     # None if the constructor failed half-way
+        if live is not None:
+            live.close()
+        for widget in [*_descendants(self), self]:
+            for part in (getattr(widget, "layout", None), getattr(widget, "style", None)):
+                if isinstance(part, widgets.Widget):
+                    part.close()
+            widgets.Widget.close(widget)
+
+    def _repr_mimebundle_(self, **kwargs):
+        # Beside the live widget, a PNG of the figure for viewers without a
+        # widget manager (nbconvert to HTML, GitHub): they show the picture.
+        bundle = super()._repr_mimebundle_(**kwargs)
+        if isinstance(bundle, dict) and "image/png" not in bundle:
+            import base64
+
+            bundle["image/png"] = base64.b64encode(self.live.png()).decode("ascii")
+        return bundle
+
+
+def _descendants(widget):
+    for child in getattr(widget, "children", ()):
+        yield from _descendants(child)
+        yield child
+    toolbar = getattr(widget, "toolbar", None)      # ipympl's canvas has one
+    if isinstance(toolbar, widgets.Widget):
+        yield toolbar

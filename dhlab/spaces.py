@@ -1,0 +1,250 @@
+"""Joint space and Cartesian space side by side (seed 003), for a 2-DOF mechanism.
+
+On the left, the joint vector q = (q1, q2) is a point in **joint space**
+(*espacio articular*); on the right, the mechanism and its end effector in
+**Cartesian space** (*espacio cartesiano*). Both move together: moving a joint
+slider moves the point and the robot.
+
+Given an inverse-kinematics function ``ik(x, y) -> list of q``, the panel also
+shows **every** solution for the end effector's position (both branches of the
+P-R mechanism: two points on the left, two ghost robots on the right), and
+gets target sliders (x, y): moving the target runs the inverse kinematics. An
+unreachable target (|y| > l2 for the P-R mechanism) is reported, not a crash.
+
+>>> import functools, dhlab
+>>> robot = dhlab.robots.pr_mechanism()
+>>> panel = spaces(robot, ik=functools.partial(dhlab.ik.pr_mechanism_ik, robot))
+>>> panel.set_target(2.0, 0.25)        # both branches: A (q2 = 30°) and B (q2 = 150°)
+>>> [s.round(6).tolist() for s in panel.solutions]
+[[0.566987, 0.523599], [1.433013, 2.617994]]
+"""
+from __future__ import annotations
+
+import html
+
+import ipywidgets as widgets
+import numpy as np
+from matplotlib.patches import Rectangle
+from matplotlib.transforms import offset_copy
+
+from .livefigure import LiveFigure
+from .panel import Panel, checked_start, joint_sliders, q_to_slider, slider_to_q, unit_of
+from .view import default_q, robot_view
+
+__all__ = ["spaces", "SpacesPanel", "wrap_into_limits"]
+
+MAX_SOLUTIONS = 4              # ghost robots made in advance (the artists never change in number)
+SOLUTION_NAMES = "ABCD"
+GHOST_COLORS = ("tab:purple", "tab:cyan", "tab:olive", "tab:pink")
+
+
+def wrap_into_limits(robot, q) -> tuple:
+    """``q`` with each revolute angle shifted by whole turns into its joint limits
+    where possible (π − asin(…) may come out as 233° for a ±180° joint).
+    Returns (q, True if every joint is within its limits)."""
+    q = np.array(q, dtype=float)
+    ok = True
+    for j, link in enumerate(robot.links):
+        lo, hi = link.qlim
+        if link.is_revolute:
+            for turn in (0.0, -2 * np.pi, 2 * np.pi):
+                if lo - 1e-9 <= q[j] + turn <= hi + 1e-9:
+                    q[j] += turn
+                    break
+        ok = ok and bool(lo - 1e-9 <= q[j] <= hi + 1e-9)
+    return q, ok
+
+
+class SpacesPanel(Panel):
+    """The widget of :func:`spaces`.
+
+    Attributes: ``sliders`` (the joints, display units), ``target_sliders``
+    (x, y; only with ``ik``), ``figure``, ``view`` (the Cartesian view),
+    ``solutions`` (the inverse-kinematics solutions shown, radians / length),
+    ``message`` (HTML) and ``q``.
+    """
+
+    def __init__(self, robot, ik=None, q=None, *, figsize=(10, 4.5), backend="auto"):
+        if robot.n != 2:
+            raise ValueError(f"the joint-space view needs a 2-DOF mechanism (one axis per joint); "
+                             f"{robot.name!r} has {robot.n} joints.")
+        self.robot, self.ik = robot, ik
+        self.solutions = []
+        q = default_q(robot) if q is None else checked_start(robot, q)
+        live = LiveFigure(figsize=figsize, backend=backend)
+        self._build_joint_axes(live)
+        self._build_cartesian_axes(live, q)
+        rows, self.sliders = joint_sliders(robot, q)
+        self.message = widgets.HTML(layout=widgets.Layout(max_width="480px"))
+        controls = [widgets.HTML("<b>Joints</b> (<i>articulaciones</i>)"), *rows]
+        self.target_sliders = []
+        if ik is not None:
+            self.target_sliders = self._target_sliders()
+            controls += [widgets.HTML("<b>Target</b> for the end effector: inverse kinematics"),
+                         *self.target_sliders]
+        super().__init__(live, controls + [self.message])
+        self._quiet = False
+        self.run(self._from_joints)
+        self.observe_values(self.sliders, self._from_joints)
+        self.observe_values(self.target_sliders, self._from_target)
+
+    # --- figure ------------------------------------------------------------------------
+    def _build_joint_axes(self, live):
+        ax = live.figure.add_subplot(1, 2, 1)
+        (lo1, hi1), (lo2, hi2) = [[q_to_slider(link, v) for v in link.qlim] for link in self.robot.links]
+        labels = list(getattr(self.robot, "joint_labels", ["q1", "q2"]))
+        pad1, pad2 = 0.08 * (hi1 - lo1), 0.08 * (hi2 - lo2)
+        ax.set(xlim=(lo1 - pad1, hi1 + pad1), ylim=(lo2 - pad2, hi2 + pad2),
+               xlabel=f"{labels[0]} [{unit_of(self.robot, self.robot.links[0])}]",
+               ylabel=f"{labels[1]} [{unit_of(self.robot, self.robot.links[1])}]",
+               title="Joint space (espacio articular)")
+        ax.add_patch(Rectangle((lo1, lo2), hi1 - lo1, hi2 - lo2, fc="0.93", ec="0.5", lw=1,
+                               label="joint limits"))
+        ax.grid(True, alpha=0.3)
+        self.solution_marks = [ax.plot([], [], "o", ms=12, mfc="none", mew=2, color=c)[0]
+                               for c in GHOST_COLORS]
+        beside = offset_copy(ax.transData, fig=live.figure, x=8, y=6, units="points")
+        self.solution_names = [ax.text(0, 0, name, color=c, fontsize=10, fontweight="bold",
+                                       transform=beside)
+                               for name, c in zip(SOLUTION_NAMES, GHOST_COLORS)]
+        self.joint_point, = ax.plot([], [], "o", ms=8, color="k")
+        live.add_moving(*self.solution_marks, *self.solution_names, self.joint_point)
+        self.joint_ax = ax
+
+    def _build_cartesian_axes(self, live, q):
+        planar = bool(getattr(self.robot, "is_planar", False))
+        ax = live.figure.add_subplot(1, 2, 2, projection=None if planar else "3d")
+        # the ghosts (one per possible IK solution) first, so the robot is drawn on top
+        self.ghosts = [robot_view(self.robot, q, ax=ax, live=live, planar=planar, triads=False,
+                                  labels=False, color=c, alpha=0.45) for c in GHOST_COLORS]
+        self.view = robot_view(self.robot, q, ax=ax, live=live, planar=planar)
+        self.view.setup_axes(ax)
+        ax.set_title("Cartesian space (espacio cartesiano)")
+        if planar:                     # the workspace, as the end effector positions it can reach
+            ax.plot(*self._workspace_points().T, ".", ms=1, color="0.8", zorder=0)
+        self.target_mark, = ax.plot([], [], "x", ms=12, mew=3, color="k") if planar else \
+            ax.plot([], [], [], "x", ms=12, mew=3, color="k")
+        live.add_moving(self.target_mark)
+        live.figure.set_layout_engine("tight")
+
+    def _workspace_points(self, per_joint: int = 60):
+        (lo1, hi1), (lo2, hi2) = (link.qlim for link in self.robot.links)
+        grid = np.stack(np.meshgrid(np.linspace(lo1, hi1, per_joint),
+                                    np.linspace(lo2, hi2, per_joint)), axis=-1).reshape(-1, 2)
+        return np.asarray(self.robot.fk(grid), dtype=float)[:, :2, 3]
+
+    def _target_sliders(self):
+        lo, hi = self.view.box
+        return [widgets.FloatSlider(value=0.0, min=float(lo[k]), max=float(hi[k]),
+                                    step=float(hi[k] - lo[k]) / 1000, description=name,
+                                    readout_format=".3f", continuous_update=True,
+                                    style={"description_width": "3em"},
+                                    layout=widgets.Layout(width="330px"))
+                for k, name in enumerate(("x", "y"))]
+
+    # --- updates ------------------------------------------------------------------------
+    @property
+    def q(self) -> np.ndarray:
+        return slider_to_q(self.robot, self.sliders)
+
+    def _from_joints(self):
+        """A joint slider moved: move the robot, and run the IK on where it went."""
+        if self._quiet:
+            return
+        q = self.q
+        x, y = np.asarray(self.robot.fk(q), dtype=float)[:2, 3]
+        if self.ik is not None:
+            self._set_quietly(self.target_sliders, (x, y))
+            self._show_solutions(self.ik(x, y), (x, y))
+        self._draw(q, (x, y) if self.ik is not None else None)
+        self._say(self._ik_text((x, y)) if self.ik is not None else "")
+
+    def _from_target(self):
+        """A target slider moved: solve the IK and move the robot to the solution
+        nearest to where it is (so it stays on its branch)."""
+        if self._quiet:
+            return
+        self.set_target(*(s.value for s in self.target_sliders))
+
+    def set_target(self, x: float, y: float) -> None:
+        """Solve the inverse kinematics for (x, y) and show every solution."""
+        if self.ik is None:
+            raise ValueError("this panel has no inverse kinematics: pass ik=... to spaces().")
+        self._set_quietly(self.target_sliders, (x, y))
+        usable = self._show_solutions(self.ik(x, y), (x, y))
+        q = self.q
+        if usable:
+            q = min(usable, key=lambda s: np.linalg.norm(s - q))
+            self._set_quietly(self.sliders, [q_to_slider(link, v) for link, v in zip(self.robot.links, q)])
+        self._draw(q, (x, y))
+        self._say(self._ik_text((x, y)))
+
+    def _show_solutions(self, solutions, target):
+        """Remember the IK solutions; return those within the joint limits."""
+        self.ik_message = getattr(solutions, "message", "")
+        wrapped = [wrap_into_limits(self.robot, s) for s in list(solutions)[:MAX_SOLUTIONS]]
+        self.solutions = [s for s, _ in wrapped]
+        self.solutions_ok = [ok for _, ok in wrapped]
+        self.target = target
+        return [s for s, ok in wrapped if ok]
+
+    def _draw(self, q, target):
+        self.view.update(q, draw=False)
+        shown = [q_to_slider(link, v) for link, v in zip(self.robot.links, q)]
+        self.joint_point.set_data([shown[0]], [shown[1]])
+        for k, (ghost, mark, name) in enumerate(zip(self.ghosts, self.solution_marks, self.solution_names)):
+            visible = k < len(self.solutions)
+            for artist in (*ghost.artists, mark, name):
+                artist.set_visible(visible)
+            if visible:
+                s = self.solutions[k]
+                ghost.update(s, draw=False)
+                p = [q_to_slider(link, v) for link, v in zip(self.robot.links, s)]
+                mark.set_data([p[0]], [p[1]])
+                mark.set_markeredgewidth(2 if self.solutions_ok[k] else 1)
+                name.set_position((p[0], p[1]))
+        if target is None:
+            self.target_mark.set_visible(False)
+        else:
+            self.target_mark.set_visible(True)
+            reachable = bool(self.solutions)
+            self.target_mark.set_color("k" if reachable else "red")
+            if self.view.projection == "3d":
+                self.target_mark.set_data_3d([target[0]], [target[1]], [0.0])
+            else:
+                self.target_mark.set_data([target[0]], [target[1]])
+        self.live.refresh()
+
+    def _ik_text(self, target):
+        x, y = target
+        lines = [f"Target (x, y) = ({x:.3f}, {y:.3f}): {html.escape(self.ik_message or f'{len(self.solutions)} solution(s)')}"]
+        for name, s, ok in zip(SOLUTION_NAMES, self.solutions, self.solutions_ok):
+            shown = ", ".join(
+                f"{label} = {q_to_slider(link, v):.3f}{unit_of(self.robot, link) if link.is_revolute else ''}"
+                for label, link, v in zip(self.robot.joint_labels, self.robot.links, s))
+            lines.append(f"<b>{name}</b>: {shown}" + ("" if ok else " <i>(outside the joint limits)</i>"))
+        return "<br>".join(lines)
+
+    def _say(self, text):
+        self.message.value = text
+
+    def _set_quietly(self, sliders, values):
+        self._quiet = True
+        try:
+            for slider, value in zip(sliders, values):
+                slider.value = float(np.clip(value, slider.min, slider.max))
+        finally:
+            self._quiet = False
+
+    def __repr__(self):
+        return f"<dhlab joint/Cartesian spaces: {self.robot.name}>"
+
+
+def spaces(robot, ik=None, q=None, *, figsize=(10, 4.5), backend: str = "auto") -> SpacesPanel:
+    """Joint space and Cartesian space side by side for a 2-DOF ``robot``.
+
+    ``ik(x, y)`` (optional) returns the list of joint vectors that put the end
+    effector at (x, y), e.g. ``functools.partial(dhlab.ik.pr_mechanism_ik, robot)``;
+    all of them are shown. ``q``: the starting pose (radians / length units).
+    """
+    return SpacesPanel(robot, ik, q, figsize=figsize, backend=backend)

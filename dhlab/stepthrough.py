@@ -1,0 +1,235 @@
+"""The DH step-through: one link's matrix, one elementary motion at a time.
+
+Rules 10-13 of the DH convention carry frame {S_(i-1)} onto frame {S_i} by four
+motions, always in this order (seeds 002 and 003)::
+
+    A_i = Rz(θ_i) · Tz(d_i) · Tx(a_i) · Rx(α_i)
+
+A slider ``step`` from 0 to 4 applies them one after the other: at step 1.5
+the frame has turned by θ and moved half of d along z_(i-1). Between two whole
+steps the current motion is applied in part, so the frame glides.
+
+>>> import numpy as np
+>>> T = dh_partial(np.pi / 2, 1.0, 2.0, 0.0, 4)    # all four motions: the DH matrix
+>>> np.allclose(T, dh_partial(np.pi / 2, 1.0, 2.0, 0.0, 3))   # α = 0: the last one does nothing
+True
+>>> dh_partial(np.pi / 2, 1.0, 2.0, 0.0, 1.5)[:3, 3].round(6).tolist()   # turned, half-way up
+[0.0, 0.0, 0.5]
+"""
+from __future__ import annotations
+
+import math
+
+import ipywidgets as widgets
+import numpy as np
+
+from .livefigure import LiveFigure
+from .panel import Panel
+from .teach import matrix_html
+from .transforms import Rx, Rz, trans
+from .view import AXIS_COLORS, FrameLabels3D, triad_segments
+
+__all__ = ["dh_partial", "dh_params", "motion_text", "stepthrough", "stepthrough_link",
+           "StepThroughPanel", "MOTIONS"]
+
+# (name, parameter, what it does) for the four motions, in the DH order
+MOTIONS = (
+    ("Rz(θ)", "θ", "rotate by θ about z<sub>i−1</sub>"),
+    ("Tz(d)", "d", "translate by d along z<sub>i−1</sub>"),
+    ("Tx(a)", "a", "translate by a along the new x axis, which is x<sub>i</sub> (the common normal, <i>normal común</i>)"),
+    ("Rx(α)", "α", "rotate by α about x<sub>i</sub>, bringing z onto z<sub>i</sub>"),
+)
+_MAKERS = (Rz, lambda d: trans(0, 0, d), lambda a: trans(a, 0, 0), Rx)
+
+
+def dh_partial(theta: float, d: float, a: float, alpha: float, step: float) -> np.ndarray:
+    """The frame reached after ``step`` (0…4) of the four DH motions, relative to {S_(i-1)}.
+
+    Angles in radians. A fractional step applies that part of the next motion.
+    """
+    if not 0 <= step <= 4:
+        raise ValueError(f"step must be between 0 (frame i-1) and 4 (frame i), got {step}.")
+    T = np.eye(4)
+    for k, (make, amount) in enumerate(zip(_MAKERS, (theta, d, a, alpha))):
+        T = T @ make(min(max(step - k, 0.0), 1.0) * amount)
+    return T
+
+
+def line_in_box(point, direction, lo, hi) -> np.ndarray:
+    """The two ends of the piece of the line ``point + t·direction`` inside the box
+    [lo, hi] (matplotlib's 3D axes do not clip lines at their limits)."""
+    t_lo, t_hi = -np.inf, np.inf
+    for p, v, a, b in zip(point, direction, lo, hi):
+        if abs(v) > 1e-12:
+            t1, t2 = sorted(((a - p) / v, (b - p) / v))
+            t_lo, t_hi = max(t_lo, t1), min(t_hi, t2)
+    return np.array([point + t_lo * direction, point + t_hi * direction])
+
+
+def dh_params(A, tol: float = 1e-9):
+    """(θ, d, a, α) of a link matrix ``A`` of standard DH form (angles in radians).
+
+    Raises ValueError when ``A`` is not Rz(θ)·Tz(d)·Tx(a)·Rx(α) for any θ, d, a, α
+    (for example seed 004's Rz(θ)·Tr(0, l, 0), a link that is not written in DH form).
+    """
+    A = np.asarray(A, dtype=float)
+    theta = math.atan2(A[1, 0], A[0, 0])
+    alpha = math.atan2(A[2, 1], A[2, 2])
+    d = A[2, 3]
+    a = A[0, 3] * math.cos(theta) + A[1, 3] * math.sin(theta)
+    rebuilt = dh_partial(theta, d, a, alpha, 4)
+    if not np.allclose(rebuilt, A, atol=tol * max(1.0, np.abs(A[:3, 3]).max())):
+        raise ValueError(
+            "this link's matrix is not of the DH form Rz(θ)·Tz(d)·Tx(a)·Rx(α) "
+            f"(largest mismatch {np.abs(rebuilt - A).max():.3g}); the step-through needs a "
+            "standard DH link: write the robot as a DH table (dhlab.DHRobot.from_table).")
+    return theta, d, a, alpha
+
+
+def motion_text(step: float, theta: float, d: float, a: float, alpha: float, unit: str = "") -> str:
+    """Which motion ``step`` is applying (or has just finished), as HTML, with its
+    value (angles in degrees).
+
+    >>> motion_text(1.5, 0.0, 2.0, 0.0, 0.0, "m")
+    '<b>Step 2 of 4: Tz(d)</b>, d = 2 m: translate by d along z<sub>i−1</sub>. Done: 50 %.'
+    """
+    if step >= 4:
+        return ("<b>Done:</b> all four motions applied, the frame is now {S<sub>i</sub>}: "
+                "A<sub>i</sub> = Rz(θ)·Tz(d)·Tx(a)·Rx(α).")
+    k = int(step)
+    if step == k:                      # between two motions: say what comes next
+        done = "·".join(m[0] for m in MOTIONS[:k])
+        where = f"After {done}" if k else "At {S<sub>i−1</sub>}"
+        return (f"{where}. <b>Next, step {k + 1} of 4: {MOTIONS[k][0]}</b>, "
+                f"{_describe(k, theta, d, a, alpha, unit)}.")
+    return (f"<b>Step {k + 1} of 4: {MOTIONS[k][0]}</b>, "
+            f"{_describe(k, theta, d, a, alpha, unit)}. Done: {100 * (step - k):.0f} %.")
+
+
+def _describe(k, theta, d, a, alpha, unit):
+    _, param, what = MOTIONS[k]
+    value = (theta, d, a, alpha)[k]
+    shown = (f"{round(math.degrees(value), 1) + 0.0:.1f}°" if param in "θα"
+             else f"{round(value, 6) + 0.0:.4g}{(' ' + unit) if unit else ''}")
+    return f"{param} = {shown}: {what}"
+
+
+class StepThroughPanel(Panel):
+    """The widget of :func:`stepthrough`: ``slider`` (0…4), ``figure``, ``frame``
+    (the current 4x4 frame, in the figure's coordinates), ``text`` and ``matrix``."""
+
+    def __init__(self, theta, d, a, alpha, *, i=1, base=None, unit="", step=0.0,
+                 figsize=(6, 6), backend="auto"):
+        self.params = (float(theta), float(d), float(a), float(alpha))
+        self.i, self.unit = i, unit
+        self.base = np.eye(4) if base is None else np.asarray(base, dtype=float)
+        # triad length: a third of the link's longest offset (1 when it has none)
+        self.length = 0.3 * max(abs(d), abs(a)) if max(abs(d), abs(a)) > 1e-9 else 1.0
+        live = LiveFigure(figsize=figsize, backend=backend)
+        self._build_figure(live)
+        self.slider = widgets.FloatSlider(value=step, min=0, max=4, step=0.05, description="step",
+                                          readout_format=".2f", continuous_update=True,
+                                          layout=widgets.Layout(width="360px"))
+        self.text = widgets.HTML(layout=widgets.Layout(max_width="480px"))
+        self.matrix = widgets.HTML()
+        super().__init__(live, [widgets.HTML(self._table_html()), self.slider, self.text,
+                                self.matrix])
+        self._refresh()
+        self.observe_values([self.slider], self._refresh)
+
+    # --- figure ----------------------------------------------------------------------
+    def _build_figure(self, live):
+        ax = live.figure.add_subplot(projection="3d")
+        start, end = self.base, self.base @ dh_partial(*self.params, 4)
+        points = np.array([start[:3, 3], end[:3, 3]])
+        center = points.mean(axis=0)
+        half = max(np.abs(points - center).max() + 1.6 * self.length, 1.6 * self.length)
+        ax.set(xlim=(center[0] - half, center[0] + half), ylim=(center[1] - half, center[1] + half),
+               zlim=(center[2] - half, center[2] + half), xlabel="x", ylabel="y", zlabel="z")
+        ax.set_box_aspect((1, 1, 1))
+        ax.set_title(rf"Link {self.i}: the thick frame goes from $\{{S_{{{self.i - 1}}}\}}$ "
+                     rf"to $\{{S_{{{self.i}}}\}}$")
+        # still: frame i-1 (solid), frame i (faint, where the motions end), the z_(i-1) axis
+        self._triad(ax, start, lw=2, alpha=1.0)
+        self._triad(ax, end, lw=1.5, alpha=0.3, ls="--")
+        FrameLabels3D(ax, [rf"$\{{S_{{{self.i - 1}}}\}}$", rf"$\{{S_{{{self.i}}}\}}$"]).set_points(
+            [start[:3, 3], end[:3, 3]])
+        lo, hi = center - half, center + half
+        ax.plot(*line_in_box(start[:3, 3], start[:3, 2], lo, hi).T, ":", color=AXIS_COLORS[2], lw=1)
+        # moving: the frame being carried, and the path its origin has travelled
+        self.moving_axes = self._triad(ax, start, lw=3.5, alpha=1.0)
+        self.path, = ax.plot([], [], [], "--", color="0.4", lw=1)
+        live.add_moving(*self.moving_axes, self.path)
+        self.ax = ax
+
+    def _triad(self, ax, T, **style):
+        return [ax.plot(*seg.T, color=c, **style)[0]
+                for c, seg in zip(AXIS_COLORS, triad_segments(T[None], self.length))]
+
+    # --- update ------------------------------------------------------------------------
+    def _refresh(self):
+        step = float(self.slider.value)
+        self.frame = self.base @ dh_partial(*self.params, step)
+        for line, seg in zip(self.moving_axes, triad_segments(self.frame[None], self.length)):
+            line.set_data_3d(*seg.T)
+        # the origin moves only during Tz and Tx: corners at steps 0, 2, 3, then now
+        corners = [self.base @ dh_partial(*self.params, min(step, s)) for s in (0, 2, 3, step)]
+        self.path.set_data_3d(*np.array([c[:3, 3] for c in corners]).T)
+        self.live.refresh()
+        self.text.value = motion_text(step, *self.params, unit=self.unit)
+        self.matrix.value = matrix_html(dh_partial(*self.params, step), self._product(step))
+
+    def _product(self, step):
+        names = []
+        for k, (name, _, _) in enumerate(MOTIONS):
+            part = min(max(step - k, 0.0), 1.0)
+            if part > 0:
+                names.append(name if part == 1 else f"{name[:2]}({part:.2f}·{name[3]})")
+        return (f"<sup>{self.i - 1}</sup>T<sub>now</sub> = " + ("·".join(names) or "I"))
+
+    def _table_html(self):
+        theta, d, a, alpha = self.params
+        # rounded, then + 0.0: no "-0.0" for a value like -1e-17
+        cells = [f"{round(math.degrees(theta), 1) + 0.0:.1f}°", f"{round(d, 6) + 0.0:.4g}",
+                 f"{round(a, 6) + 0.0:.4g}", f"{round(math.degrees(alpha), 1) + 0.0:.1f}°"]
+        return ("<table style='border-collapse:collapse;font-family:monospace'>"
+                "<tr><th style='padding:0 .6em'>i</th><th style='padding:0 .6em'>θ</th>"
+                "<th style='padding:0 .6em'>d</th><th style='padding:0 .6em'>a</th>"
+                "<th style='padding:0 .6em'>α</th></tr>"
+                f"<tr><td style='padding:0 .6em'>{self.i}</td>"
+                + "".join(f"<td style='padding:0 .6em'>{c}</td>" for c in cells) + "</tr></table>")
+
+    def __repr__(self):
+        return f"<dhlab DH step-through: link {self.i}>"
+
+
+def stepthrough(theta_deg: float = 0.0, d: float = 0.0, a: float = 0.0, alpha_deg: float = 0.0,
+                *, i: int = 1, unit: str = "", step: float = 0.0, figsize=(6, 6),
+                backend: str = "auto") -> StepThroughPanel:
+    """Step through one DH link given by its row θ, d, a, α (**angles in degrees**).
+
+    >>> panel = stepthrough(theta_deg=90, d=1.0, a=0.5, alpha_deg=-90, i=2)
+    >>> panel.slider.value = 2        # after Rz(θ) and Tz(d)
+    >>> panel.frame[:3, 3].round(6).tolist()
+    [0.0, 0.0, 1.0]
+    """
+    return StepThroughPanel(math.radians(theta_deg), d, a, math.radians(alpha_deg),
+                            **_options(i, unit, step, figsize, backend))
+
+
+def stepthrough_link(robot, i: int, q=None, *, step: float = 0.0, figsize=(6, 6),
+                     backend: str = "auto") -> StepThroughPanel:
+    """Step through link ``i`` (1…n) of a DH ``robot`` at pose ``q`` (radians / length
+    units; default zero), placed where the robot puts frame i-1."""
+    if not 1 <= i <= robot.n:
+        raise ValueError(f"i must be a link number 1…{robot.n}, got {i}.")
+    q = np.zeros(robot.n) if q is None else np.asarray(q, dtype=float)
+    frames = np.asarray(robot.frames(q), dtype=float)
+    A = np.linalg.solve(frames[i - 1], frames[i])       # ^{i-1}A_i = inv(F_{i-1}) · F_i
+    theta, d, a, alpha = dh_params(A)
+    return StepThroughPanel(theta, d, a, alpha, base=frames[i - 1],
+                            **_options(i, getattr(robot, "unit", ""), step, figsize, backend))
+
+
+def _options(i, unit, step, figsize, backend):
+    return dict(i=i, unit=unit, step=step, figsize=figsize, backend=backend)

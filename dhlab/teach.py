@@ -1,0 +1,122 @@
+"""The teach panel: one slider per joint, the robot moving beside them, and the
+end-effector pose and matrix read live.
+
+>>> import dhlab
+>>> from dhlab.teach import teach                 # also dhlab.teach
+>>> panel = teach(dhlab.robots.ssrms())           # display it: last line of a cell
+>>> panel.sliders[1].value = 30                   # degrees, exactly like dragging it
+>>> round(float(panel.q[1]), 6)                   # the maths gets radians
+0.523599
+
+It works with ``%matplotlib widget`` (ipympl: the figure is interactive and
+updates in place; you can rotate the 3D view) and with the default inline
+backend (the figure is an image that is replaced on every move).
+"""
+from __future__ import annotations
+
+import numpy as np
+import ipywidgets as widgets
+
+from .panel import Panel, checked_start, joint_sliders, q_to_slider, slider_to_q
+from .transforms import rpy
+from .view import default_q, robot_view
+
+__all__ = ["teach", "TeachPanel", "pose_text", "matrix_html"]
+
+
+def pose_text(T, unit: str = "") -> str:
+    """The end-effector position and roll-pitch-yaw (degrees) of pose ``T``, as HTML.
+
+    >>> import numpy as np
+    >>> print(pose_text(np.eye(4), "m"))
+    <b>End effector</b> (<i>efector final</i>)<br>position [m]: x = 0.000, y = 0.000, z = 0.000<br>roll-pitch-yaw [°]: roll = 0.00, pitch = 0.00, yaw = 0.00
+    """
+    x, y, z = np.round(np.asarray(T, dtype=float)[:3, 3], 3) + 0.0    # + 0.0: no "-0.000"
+    roll, pitch, yaw = np.round(np.degrees(rpy(T)), 2) + 0.0
+    return (f"<b>End effector</b> (<i>efector final</i>)<br>"
+            f"position [{unit or 'length'}]: x = {x:.3f}, y = {y:.3f}, z = {z:.3f}<br>"
+            f"roll-pitch-yaw [°]: roll = {roll:.2f}, pitch = {pitch:.2f}, yaw = {yaw:.2f}")
+
+
+def matrix_html(T, title: str = "<sup>0</sup>T<sub>n</sub>") -> str:
+    """A 4x4 matrix as a small HTML table, rotation and translation parts visible."""
+    rows = []
+    for i, row in enumerate(np.round(np.asarray(T, dtype=float), 4) + 0.0):   # no "-0.0000"
+        cells = "".join(
+            f'<td style="padding:0 .5em;text-align:right;{"border-left:1px solid #999;" if j == 3 else ""}">'
+            f"{v:.4f}</td>" for j, v in enumerate(row))
+        rows.append(f'<tr style="{"border-top:1px solid #999;" if i == 3 else ""}">{cells}</tr>')
+    return (f'<div>{title} =</div><table style="font-family:monospace;border-collapse:collapse">'
+            f'{"".join(rows)}</table>')
+
+
+class TeachPanel(Panel):
+    """The widget returned by :func:`teach`.
+
+    Attributes: ``sliders`` (one per joint, display units), ``figure`` (the
+    matplotlib Figure), ``view`` (the :class:`~dhlab.view.RobotView`),
+    ``readout`` and ``matrix`` (HTML widgets), ``q`` (radians / length units).
+    """
+
+    def __init__(self, robot, q=None, *, on_change=None, planar=None, figsize=None,
+                 backend: str = "auto"):
+        self.robot = robot
+        self.on_change = on_change
+        q = default_q(robot) if q is None else checked_start(robot, q)
+        rows, self.sliders = joint_sliders(robot, q)
+        self.view = robot_view(robot, q, planar=planar, figsize=figsize, backend=backend)
+        live = self.view.live
+        self.readout = widgets.HTML()
+        self.matrix = widgets.HTML()
+        super().__init__(live, [widgets.HTML(f"<b>{robot.name}</b>: joints (<i>articulaciones</i>)"),
+                                *rows, self.readout, self.matrix])
+        self._refresh()
+        self.observe_values(self.sliders, self._refresh)
+
+    @property
+    def q(self) -> np.ndarray:
+        """The joint vector the sliders show (radians / length units)."""
+        return slider_to_q(self.robot, self.sliders)
+
+    def set_q(self, q) -> None:
+        """Move every slider (q in radians / length units) and redraw once."""
+        q = np.asarray(q, dtype=float)
+        self._quiet = True
+        try:
+            for link, slider, value in zip(self.robot.links, self.sliders, q):
+                slider.value = q_to_slider(link, value)
+        finally:
+            self._quiet = False
+        self.run(self._refresh)
+
+    _quiet = False
+
+    def _refresh(self) -> None:
+        if self._quiet:
+            return
+        q = self.q
+        self.view.update(q)
+        T = np.asarray(self.robot.fk(q), dtype=float)
+        self.readout.value = pose_text(T, getattr(self.robot, "unit", ""))
+        self.matrix.value = matrix_html(T, f"<sup>0</sup>T<sub>{self.robot.n}</sub>")
+        if self.on_change is not None:
+            self.on_change(q)
+
+    def __repr__(self):
+        return f"<dhlab teach panel: {self.robot.name}, {self.robot.n} joints>"
+
+
+def teach(robot, q=None, *, on_change=None, planar=None, figsize=None,
+          backend: str = "auto") -> TeachPanel:
+    """A teach panel for ``robot``: sliders (revolute in degrees, prismatic in
+    length units, within the joint limits), the robot view, and the live
+    end-effector pose and 4x4 matrix.
+
+    ``q``: the starting pose (radians / length units; default zero, clipped to
+    the limits). ``on_change(q)``: called after every move, e.g. to check an
+    exercise (its errors are shown in the panel). ``planar``: force the 2D
+    (True) or 3D (False) view. ``figsize``: inches (default
+    from the workspace's shape). ``backend``: 'auto', 'ipympl' or 'image'.
+    """
+    return TeachPanel(robot, q, on_change=on_change, planar=planar, figsize=figsize,
+                      backend=backend)

@@ -1,0 +1,132 @@
+"""The real-browser tier: JupyterLab (and Voilà) driven by Playwright with Debian's Chromium.
+
+Not part of the main test run: these tests are skipped unless asked for,
+
+    bash tests/browser/setup.sh                  # chromium (apt), playwright + voila (pip)
+    python -m pytest tests/browser --browser     (or --run-browser, or DHLAB_BROWSER_TESTS=1)
+
+They need ``apt-get install chromium`` (``/usr/bin/chromium``, or set
+``DHLAB_CHROMIUM``) and ``pip install playwright`` (its own browser download is
+not used); the Voilà test also needs ``pip install voila`` (skipped without it). Each test starts its own server on 127.0.0.1 with a random token.
+"""
+from __future__ import annotations
+
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import time
+import urllib.request
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).parent
+collect_ignore_glob = ["*.ipynb"]      # the demo notebook is opened by the tests, not run by nbval
+CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                 "--disable-component-update", "--disable-sync", "--no-first-run"]
+
+
+def pytest_addoption(parser):
+    parser.addoption("--browser", "--run-browser", dest="run_browser", action="store_true", default=False,
+                     help="run the real-browser tests in tests/browser (JupyterLab/Voilà + Chromium)")
+
+
+def _wanted(config) -> bool:
+    try:
+        asked = config.getoption("run_browser")
+    except ValueError:                      # option not registered (conftest loaded late)
+        asked = False
+    return bool(asked or os.environ.get("DHLAB_BROWSER_TESTS"))
+
+
+def pytest_collection_modifyitems(config, items):
+    if _wanted(config):
+        return
+    skip = pytest.mark.skip(reason="browser tier: run `python -m pytest tests/browser --browser`")
+    for item in items:
+        if HERE in Path(str(item.fspath)).resolve().parents:
+            item.add_marker(skip)
+
+
+@pytest.fixture(scope="session")
+def chromium_path():
+    path = os.environ.get("DHLAB_CHROMIUM") or shutil.which("chromium") or "/usr/bin/chromium"
+    if not Path(path).exists():
+        pytest.fail("the browser tests need Chromium: apt-get install -y chromium (or set DHLAB_CHROMIUM)")
+    return path
+
+
+@pytest.fixture(scope="session")
+def browser(chromium_path):
+    playwright = pytest.importorskip("playwright.sync_api", reason="pip install playwright")
+    with playwright.sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=chromium_path, args=CHROMIUM_ARGS, headless=True)
+        yield browser
+        browser.close()
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+class Server:
+    """A Jupyter server process on 127.0.0.1, stopped (and its kernels with it) at the end."""
+
+    def __init__(self, args, root: Path, ready_path: str, timeout: float = 90):
+        self.port = free_port()
+        self.token = os.urandom(12).hex()
+        self.root = root
+        settings = root / ".settings" / "@jupyterlab" / "apputils-extension"
+        settings.mkdir(parents=True, exist_ok=True)
+        # no news or update pop-ups over the notebook
+        (settings / "notification.jupyterlab-settings").write_text(
+            '{"fetchNews": "false", "checkForUpdates": false}')
+        env = dict(os.environ, JUPYTERLAB_SETTINGS_DIR=str(root / ".settings"),
+                   JUPYTERLAB_WORKSPACES_DIR=str(root / ".workspaces"),
+                   JUPYTER_RUNTIME_DIR=str(root / ".runtime"))
+        self.log = open(root / "server.log", "wb")
+        command = [sys.executable, "-m", *args, f"--port={self.port}", "--no-browser"]
+        self.process = subprocess.Popen([c.format(port=self.port, token=self.token) for c in command],
+                                        cwd=root, env=env, stdout=self.log, stderr=subprocess.STDOUT,
+                                        start_new_session=True)
+        self.url = f"http://127.0.0.1:{self.port}"
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if self.process.poll() is not None:
+                raise RuntimeError(f"server exited: {(root / 'server.log').read_text()[-3000:]}")
+            try:
+                urllib.request.urlopen(self.url + ready_path.format(token=self.token), timeout=2)
+                return
+            except OSError:
+                time.sleep(0.5)
+        self.stop()
+        raise RuntimeError(f"server not ready in {timeout} s: {(root / 'server.log').read_text()[-3000:]}")
+
+    def stop(self):
+        if self.log.closed:
+            return
+        if self.process.poll() is None:
+            self.process.terminate()
+            try:
+                self.process.wait(timeout=20)
+            except subprocess.TimeoutExpired:
+                self.process.kill()
+                self.process.wait(timeout=10)
+        self.log.close()
+
+
+@pytest.fixture
+def start_server():
+    """``start_server(args, root, ready_path)`` -> a running :class:`Server`, stopped after the test."""
+    started = []
+
+    def start(*args, **kwargs):
+        started.append(Server(*args, **kwargs))
+        return started[-1]
+    yield start
+    for server in started:
+        server.stop()

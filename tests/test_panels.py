@@ -1,0 +1,157 @@
+"""The DH step-through and the joint-space / Cartesian-space panel."""
+import functools
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import dhlab  # noqa: E402
+from dhlab import robots  # noqa: E402
+from dhlab.spaces import spaces, wrap_into_limits  # noqa: E402
+from dhlab.stepthrough import (dh_params, dh_partial, line_in_box, motion_text,  # noqa: E402
+                               stepthrough, stepthrough_link)
+
+
+# --- the step-through -------------------------------------------------------------------
+def test_dh_partial_applies_the_motions_in_dh_order():
+    th, d, a, al = 0.7, 1.5, -0.8, -1.2
+    steps = [np.eye(4), dhlab.Rz(th), dhlab.Rz(th) @ dhlab.trans(0, 0, d),
+             dhlab.Rz(th) @ dhlab.trans(0, 0, d) @ dhlab.trans(a, 0, 0), dhlab.dh_matrix(th, d, a, al)]
+    for k, expected in enumerate(steps):
+        np.testing.assert_allclose(dh_partial(th, d, a, al, k), expected, atol=1e-12)
+    # half-way through Tz: turned by θ, risen by d/2
+    np.testing.assert_allclose(dh_partial(th, d, a, al, 1.5), dhlab.Rz(th) @ dhlab.trans(0, 0, d / 2), atol=1e-12)
+    with pytest.raises(ValueError, match="between 0"):
+        dh_partial(th, d, a, al, 4.5)
+
+
+def test_dh_params_round_trip_and_refuse_non_dh_links():
+    rng = np.random.default_rng(4)
+    for _ in range(20):
+        th, al = rng.uniform(-np.pi, np.pi, 2)
+        d, a = rng.uniform(-2, 2, 2)
+        np.testing.assert_allclose(dh_params(dhlab.dh_matrix(th, d, a, al)), (th, d, a, al), atol=1e-9)
+    with pytest.raises(ValueError, match="not of the DH form"):
+        dh_params(dhlab.Rz(0.4) @ dhlab.trans(0, 0.7, 0))     # seed 004: Rz(θ)·Tr(0, l, 0)
+
+
+def test_stepthrough_of_a_robot_link_goes_from_frame_i_minus_1_to_frame_i():
+    robot = robots.ssrms()
+    q = dhlab.deg([10, 20, 30, 40, 50, 60, 70])
+    F = robot.frames(q)
+    for i in (1, 3, 5):
+        panel = stepthrough_link(robot, i, q)
+        np.testing.assert_allclose(panel.frame, F[i - 1], atol=1e-12)
+        panel.slider.value = 4
+        np.testing.assert_allclose(panel.frame, F[i], atol=1e-9)
+        # the moving triad is drawn where the frame is
+        for k, line in enumerate(panel.moving_axes):
+            start, tip = np.column_stack(line.get_data_3d())[:2]
+            np.testing.assert_allclose(start, F[i][:3, 3], atol=1e-9)
+            np.testing.assert_allclose((tip - start) / panel.length, F[i][:3, k], atol=1e-9)
+    with pytest.raises(ValueError, match="not of the DH form"):
+        stepthrough_link(robots.robot_no_tan_elemental_1(), 1)
+    with pytest.raises(ValueError, match="link number 1…7"):
+        stepthrough_link(robot, 8)
+
+
+def test_stepthrough_says_which_motion_is_applied():
+    panel = stepthrough(theta_deg=90, d=1.0, a=0.5, alpha_deg=-90, i=2)
+    expected = {0.5: "Step 1 of 4: Rz(θ)", 1.5: "Step 2 of 4: Tz(d)", 2.5: "Step 3 of 4: Tx(a)",
+                3.5: "Step 4 of 4: Rx(α)", 4.0: "Done"}
+    for step, words in expected.items():
+        panel.slider.value = step
+        assert words in panel.text.value
+        np.testing.assert_allclose(panel.frame, dh_partial(np.pi / 2, 1.0, 0.5, -np.pi / 2, step), atol=1e-12)
+    assert "θ = 90.0°" in motion_text(0.2, np.pi / 2, 0, 0, 0)
+    panel.slider.value = 2.5
+    assert "Rz(θ)·Tz(d)·Tx(0.50·a)" in panel.matrix.value
+
+
+def test_line_in_box_clips_to_the_box():
+    ends = line_in_box(np.array([0.2, 0.0, 0.0]), np.array([0.0, 0.0, 1.0]), -np.ones(3), np.ones(3))
+    np.testing.assert_allclose(ends, [[0.2, 0, -1], [0.2, 0, 1]])
+
+
+# --- joint space / Cartesian space ------------------------------------------------------
+@pytest.fixture
+def pr_panel():
+    robot = robots.pr_mechanism()
+    return spaces(robot, ik=functools.partial(dhlab.ik.pr_mechanism_ik, robot))
+
+
+def test_joint_point_and_robot_move_together(pr_panel):
+    pr_panel.sliders[0].value = 0.8
+    pr_panel.sliders[1].value = 45
+    q = np.array([0.8, np.radians(45)])
+    np.testing.assert_allclose(np.ravel(pr_panel.joint_point.get_data()), [0.8, 45.0])
+    ee = np.column_stack(pr_panel.view.ee_marker.get_data())[0]
+    np.testing.assert_allclose(ee, [0.8 + 1 + 0.5 * np.cos(q[1]), 0.5 * np.sin(q[1])], atol=1e-12)
+    # the target sliders follow the end effector
+    np.testing.assert_allclose([s.value for s in pr_panel.target_sliders], ee, atol=0.01)
+
+
+@pytest.mark.parametrize("case", ["003_PR_ik_2.0_0.25", "003_PR_ik_2.0_-0.4", "003_PR_ik_1.2_0.5"])
+def test_every_ik_solution_is_shown(pr_panel, cases, case):
+    c = cases[case]
+    x, y = c["target_position"]
+    pr_panel.set_target(x, y)
+    expected = [np.array([s["q1"], s["q2"]]) for s in c["expected_solutions"].values()]
+    expected = expected[:c["expected_solution_count"]]
+    assert len(pr_panel.solutions) == len(expected)
+    for got, want in zip(pr_panel.solutions, expected):
+        assert got[0] == pytest.approx(want[0], abs=1e-9)
+        assert np.cos(got[1] - want[1]) == pytest.approx(1.0)       # same angle, maybe a turn apart
+    for k, s in enumerate(pr_panel.solutions):                       # a ghost robot per solution,
+        ghost = pr_panel.ghosts[k]
+        assert ghost.link_line.get_visible()
+        np.testing.assert_allclose(ghost.frames[-1][:2, 3], [x, y], atol=1e-9)   # reaching the target
+        mark = np.ravel(pr_panel.solution_marks[k].get_data())
+        np.testing.assert_allclose(mark, [s[0], np.degrees(s[1])], atol=1e-9)
+    for ghost in pr_panel.ghosts[len(expected):]:
+        assert not ghost.link_line.get_visible()
+    # the robot itself went to a solution within the limits
+    ee = np.column_stack(pr_panel.view.ee_marker.get_data())[0]
+    np.testing.assert_allclose(ee, [x, y], atol=1e-6)
+
+
+def test_unreachable_target_is_reported_not_crashed(pr_panel, cases):
+    x, y = cases["003_PR_ik_unreachable"]["target_position"]
+    before = pr_panel.q.copy()
+    pr_panel.target_sliders[1].value = y
+    pr_panel.target_sliders[0].value = x
+    assert pr_panel.solutions == []
+    assert "no solution" in pr_panel.message.value
+    assert pr_panel.target_mark.get_color() == "red"
+    assert not any(g.link_line.get_visible() for g in pr_panel.ghosts)
+    np.testing.assert_allclose(pr_panel.q, before)               # the robot stays where it was
+
+
+def test_solution_outside_joint_limits_is_marked(pr_panel):
+    pr_panel.set_target(3.2, 0.25)              # branch B needs q1 = 2.63 > 2 (the slider's max)
+    assert pr_panel.solutions_ok == [True, False]
+    assert "outside the joint limits" in pr_panel.message.value
+    assert pr_panel.q[0] == pytest.approx(pr_panel.solutions[0][0])
+
+
+def test_spaces_without_ik_and_wrong_robots():
+    panel = spaces(robots.robot_no_tan_elemental_1())
+    panel.sliders[0].value = -60
+    panel.sliders[1].value = 90
+    ee = np.column_stack(panel.view.ee_marker.get_data())[0]
+    np.testing.assert_allclose(ee, [0.866025, 0.5], atol=1e-6)
+    assert not panel.target_sliders and not panel.target_mark.get_visible()
+    with pytest.raises(ValueError, match="needs a 2-DOF mechanism"):
+        spaces(robots.ssrms())
+    with pytest.raises(ValueError, match="no inverse kinematics"):
+        panel.set_target(0.5, 0.5)
+
+
+def test_wrap_into_limits():
+    robot = robots.pr_mechanism()
+    q, ok = wrap_into_limits(robot, [0.5, np.radians(233.13)])
+    assert ok and q[1] == pytest.approx(np.radians(233.13 - 360))
+    assert wrap_into_limits(robot, [2.5, 0.0])[1] is False
