@@ -38,12 +38,27 @@ def execute_notebook(path, timeout: int = 300, kernel_name: str = "python3") -> 
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3 (dhlab)", "language": "python"}
     for cell in nb.cells:
         cell.metadata.pop("execution", None)
+        if cell.cell_type == "code":
+            cell.outputs = _coalesce_streams(cell.outputs)
         for out in cell.get("outputs", []):
             data = out.get("data", {})
             data.pop("application/vnd.jupyter.widget-view+json", None)
             if "text/plain" in data:
                 data["text/plain"] = ADDRESS.sub("0xADDRESS", data["text/plain"])
     nbformat.write(nb, path)
+
+
+def _coalesce_streams(outputs):
+    """Join consecutive prints to the same stream: the kernel splits them into chunks
+    at moments that vary between runs (nbval joins them too when it compares)."""
+    merged = []
+    for out in outputs:
+        if (merged and out.get("output_type") == "stream" and merged[-1].get("output_type") == "stream"
+                and merged[-1].get("name") == out.get("name")):
+            merged[-1]["text"] += out["text"]
+        else:
+            merged.append(out)
+    return merged
 
 
 def main(argv=None) -> int:

@@ -40,6 +40,8 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
+from .validation import DHLabError
+
 __all__ = ["LiveFigure", "ipympl_active", "forget_previous_run", "encode_png"]
 
 # ipympl loses a diff frame now and then, which leaves stale pixels until the
@@ -62,7 +64,7 @@ class LiveFigure:
 
     def __init__(self, figsize=(6, 6), dpi=100, backend: str = "auto"):
         if backend not in ("auto", "ipympl", "image"):
-            raise ValueError(f"backend must be 'auto', 'ipympl' or 'image', got {backend!r}.")
+            raise DHLabError(f"backend must be 'auto', 'ipympl' or 'image', got {backend!r}.")
         self.figure = Figure(figsize=figsize, dpi=dpi)
         self.uses_ipympl = backend == "ipympl" or (backend == "auto" and ipympl_active())
         if self.uses_ipympl:

@@ -22,6 +22,7 @@ import traceback
 import ipywidgets as widgets
 import numpy as np
 
+from .validation import DHLabError
 from .livefigure import LiveFigure, forget_previous_run
 
 __all__ = ["Panel", "joint_sliders", "slider_to_q", "q_to_slider", "unit_of", "checked_start"]
@@ -53,13 +54,13 @@ def checked_start(robot, q) -> np.ndarray:
     length or lies outside the joint limits (a slider could not show it)."""
     q = np.asarray(q, dtype=float)
     if q.shape != (robot.n,):
-        raise ValueError(f"q must hold {robot.n} joint values (radians for revolute joints, "
+        raise DHLabError(f"q must hold {robot.n} joint values (radians for revolute joints, "
                          f"length for prismatic ones), got shape {q.shape}.")
     for j, (link, value) in enumerate(zip(robot.links, q)):
         lo, hi = link.qlim
         if not lo - 1e-12 <= value <= hi + 1e-12:
             shown = [f"{q_to_slider(link, v):g}{unit_of(robot, link)}" for v in (value, lo, hi)]
-            raise ValueError(f"q[{j}] = {shown[0]} is outside joint {j + 1}'s limits "
+            raise DHLabError(f"q[{j}] = {shown[0]} is outside joint {j + 1}'s limits "
                              f"[{shown[1]}, {shown[2]}]; start inside them (revolute values in "
                              "radians: use dhlab.deg(...) for degrees).")
     return q

@@ -27,6 +27,7 @@ import numpy as np
 from matplotlib.patches import Rectangle
 from matplotlib.transforms import offset_copy
 
+from .validation import DHLabError
 from .livefigure import LiveFigure
 from .panel import Panel, checked_start, joint_sliders, q_to_slider, slider_to_q, unit_of
 from .view import default_q, robot_view
@@ -66,7 +67,7 @@ class SpacesPanel(Panel):
 
     def __init__(self, robot, ik=None, q=None, *, figsize=(10, 4.5), backend="auto"):
         if robot.n != 2:
-            raise ValueError(f"the joint-space view needs a 2-DOF mechanism (one axis per joint); "
+            raise DHLabError(f"the joint-space view needs a 2-DOF mechanism (one axis per joint); "
                              f"{robot.name!r} has {robot.n} joints.")
         self.robot, self.ik = robot, ik
         self.solutions = []
@@ -169,7 +170,7 @@ class SpacesPanel(Panel):
     def set_target(self, x: float, y: float) -> None:
         """Solve the inverse kinematics for (x, y) and show every solution."""
         if self.ik is None:
-            raise ValueError("this panel has no inverse kinematics: pass ik=... to spaces().")
+            raise DHLabError("this panel has no inverse kinematics: pass ik=... to spaces().")
         self._set_quietly(self.target_sliders, (x, y))
         usable = self._show_solutions(self.ik(x, y), (x, y))
         q = self.q

@@ -23,6 +23,7 @@ import math
 import ipywidgets as widgets
 import numpy as np
 
+from .validation import DHLabError
 from .livefigure import LiveFigure
 from .panel import Panel
 from .teach import matrix_html
@@ -48,7 +49,7 @@ def dh_partial(theta: float, d: float, a: float, alpha: float, step: float) -> n
     Angles in radians. A fractional step applies that part of the next motion.
     """
     if not 0 <= step <= 4:
-        raise ValueError(f"step must be between 0 (frame i-1) and 4 (frame i), got {step}.")
+        raise DHLabError(f"step must be between 0 (frame i-1) and 4 (frame i), got {step}.")
     T = np.eye(4)
     for k, (make, amount) in enumerate(zip(_MAKERS, (theta, d, a, alpha))):
         T = T @ make(min(max(step - k, 0.0), 1.0) * amount)
@@ -69,7 +70,7 @@ def line_in_box(point, direction, lo, hi) -> np.ndarray:
 def dh_params(A, tol: float = 1e-9):
     """(θ, d, a, α) of a link matrix ``A`` of standard DH form (angles in radians).
 
-    Raises ValueError when ``A`` is not Rz(θ)·Tz(d)·Tx(a)·Rx(α) for any θ, d, a, α
+    Raises DHLabError when ``A`` is not Rz(θ)·Tz(d)·Tx(a)·Rx(α) for any θ, d, a, α
     (for example seed 004's Rz(θ)·Tr(0, l, 0), a link that is not written in DH form).
     """
     A = np.asarray(A, dtype=float)
@@ -79,7 +80,7 @@ def dh_params(A, tol: float = 1e-9):
     a = A[0, 3] * math.cos(theta) + A[1, 3] * math.sin(theta)
     rebuilt = dh_partial(theta, d, a, alpha, 4)
     if not np.allclose(rebuilt, A, atol=tol * max(1.0, np.abs(A[:3, 3]).max())):
-        raise ValueError(
+        raise DHLabError(
             "this link's matrix is not of the DH form Rz(θ)·Tz(d)·Tx(a)·Rx(α) "
             f"(largest mismatch {np.abs(rebuilt - A).max():.3g}); the step-through needs a "
             "standard DH link: write the robot as a DH table (dhlab.DHRobot.from_table).")
@@ -222,7 +223,7 @@ def stepthrough_link(robot, i: int, q=None, *, step: float = 0.0, figsize=(6, 6)
     """Step through link ``i`` (1…n) of a DH ``robot`` at pose ``q`` (radians / length
     units; default zero), placed where the robot puts frame i-1."""
     if not 1 <= i <= robot.n:
-        raise ValueError(f"i must be a link number 1…{robot.n}, got {i}.")
+        raise DHLabError(f"i must be a link number 1…{robot.n}, got {i}.")
     q = np.zeros(robot.n) if q is None else np.asarray(q, dtype=float)
     frames = np.asarray(robot.frames(q), dtype=float)
     A = np.linalg.solve(frames[i - 1], frames[i])       # ^{i-1}A_i = inv(F_{i-1}) · F_i
