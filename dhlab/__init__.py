@@ -25,16 +25,12 @@ __all__ = [
 ]
 __version__ = "0.1.0"
 
-# The interactive views load matplotlib's 3D toolkit and ipywidgets: imported on
-# first use, so that the maths (and the grader) start fast without them.
-_VIEWS = {"teach": "teach", "robot_view": "view", "stepthrough": "stepthrough",
-          "stepthrough_link": "stepthrough", "spaces": "spaces", "view": None}
-__all__ += list(_VIEWS)
+# The interactive views (imported here, after the maths, so that ``dhlab.teach`` is the
+# function even once the submodule of the same name has been imported).
+from . import view
+from .spaces import spaces
+from .stepthrough import stepthrough, stepthrough_link
+from .teach import teach
+from .view import robot_view
 
-
-def __getattr__(name):
-    if name not in _VIEWS:
-        raise AttributeError(f"module 'dhlab' has no attribute {name!r}")
-    import importlib
-    module = importlib.import_module(f".{_VIEWS[name] or name}", __name__)
-    return module if _VIEWS[name] is None else getattr(module, name)
+__all__ += ["teach", "robot_view", "stepthrough", "stepthrough_link", "spaces", "view"]

@@ -1,14 +1,7 @@
-"""Shared fixtures: the verified seed cases (a copy of shared/reference/seed_cases.json)."""
-import json
-from pathlib import Path
-
+"""Shared fixtures: the verified seed cases."""
 import pytest
 
-DATA = Path(__file__).parent / "data"
-
-
-def load_cases():
-    return json.loads((DATA / "seed_cases.json").read_text(encoding="utf-8"))["cases"]
+from seeddata import load_cases
 
 
 @pytest.fixture(scope="session")

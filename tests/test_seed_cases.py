@@ -13,7 +13,7 @@ import dhlab
 from dhlab import ik, robots
 from dhlab.transforms import Rz, Tz, dh_matrix, is_rigid, trans
 
-from conftest import DATA, load_cases
+from seeddata import DATA, load_cases
 
 CASES = load_cases()
 TOL = 1e-9

@@ -9,7 +9,7 @@ import sympy as sp
 from dhlab import robots, symbolic
 from dhlab.transforms import dh_matrix
 
-from conftest import DATA
+from seeddata import DATA
 
 PRINTED = json.loads((DATA / "seed002_printed_A.json").read_text(encoding="utf-8"))
 
