@@ -153,4 +153,11 @@ def legend(M, q_symbols) -> str:
         atoms |= _joint_trig(sp.sympify(e), q_symbols)
     named = sorted(((_compact_name(f, q_symbols), f) for f in atoms if _compact_name(f, q_symbols)),
                    key=lambda t: (len(t[0]), t[0][1:], t[0][0]))
-    return ", ".join(f"{n} = {f}" for n, f in named)
+    return ", ".join(f"{n} = {_greek(str(f))}" for n, f in named)
+
+
+def _greek(text: str) -> str:
+    """'cos(theta0)' -> 'cos(θ0)': the symbols as the slides write them."""
+    for name, char in GREEK.items():
+        text = text.replace(name, char)
+    return text
