@@ -265,11 +265,12 @@ class RobotView3D(RobotView):
         (x0, y0, z0), (x1, y1, z1) = self.box
         ax.set(xlim=(x0, x1), ylim=(y0, y1), zlim=(z0, z1), xlabel=self._axis_label("x"),
                ylabel=self._axis_label("y"), zlabel=self._axis_label("z"))
-        ax.set_box_aspect(self.box[1] - self.box[0])   # equal scaling: a cube looks like a cube
-        ax.set_title(self.robot.name)
+        # equal scaling: a cube looks like a cube
+        ax.set_box_aspect(self.box[1] - self.box[0])
+        ax.figure.suptitle(self.robot.name, y=0.985, fontsize="medium")   # a 3D title can be clipped
 
     def _fit(self, figure):
-        figure.subplots_adjust(left=0, right=0.92, bottom=0.04, top=0.95)
+        figure.subplots_adjust(left=0, right=0.92, bottom=0.02, top=0.97)
 
     def _make_artists(self, color, alpha):
         ax = self.ax
