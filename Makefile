@@ -1,7 +1,8 @@
 # dhlab — two commands do everything, on a machine with nothing but Python 3.10+:
 #   make lab    set up .venv (package + Jupyter kernel) and open the course in JupyterLab
 #   make test   set up .venv and run the whole test suite (pytest + nbval over notebooks/)
-# Other targets: make test-browser (real-browser tier), make bench (benchmarks), make clean.
+# Other targets: make test-browser (real-browser tier), make test-nbgrader (nbgrader accepts the
+# PUMA source notebook), make bench (benchmarks), make notebooks (re-execute them), make clean.
 
 PYTHON ?= python3
 VENV   := .venv
@@ -10,7 +11,7 @@ READY  := $(VENV)/.ready-$(shell cat pyproject.toml constraints.txt | cksum | cu
 # pytest-xdist runs the notebooks two at a time; --dist loadfile keeps one notebook on one worker
 XDIST  ?= -n 2 --dist loadfile
 
-.PHONY: setup lab test test-browser bench notebooks clean
+.PHONY: setup lab test test-browser test-nbgrader bench notebooks clean
 
 setup: $(READY)
 
@@ -38,13 +39,20 @@ test-browser: $(READY)
 	bash tests/browser/setup.sh
 	$(BIN)/python -m pytest tests/browser --browser -p no:xdist
 
+# nbgrader is installed only for this tier (students and our grader do not need it)
+test-nbgrader: $(READY)
+	$(BIN)/python -m pip install --quiet -c constraints.txt nbgrader
+	PATH="$(CURDIR)/$(BIN):$$PATH" $(BIN)/python -m pytest tests/test_grading_nbgrader.py -p no:xdist
+
 bench: $(READY)
 	$(if $(RTB),$(BIN)/python -m pip install --quiet roboticstoolbox-python)
 	$(BIN)/python benchmarks/run_all.py
 
-# Re-execute every notebook in place (finite timeout), so stored outputs match the code.
+# Re-execute every notebook in place (finite timeout), so stored outputs match the code;
+# the student version of the PUMA assignment is generated from its source, not executed.
 notebooks: $(READY)
-	$(BIN)/python -m dhlab.execute notebooks/*.ipynb
+	$(BIN)/python -m dhlab.execute $(filter-out notebooks/08_puma_assignment.ipynb,$(wildcard notebooks/*.ipynb)) notebooks/source/*.ipynb
+	$(BIN)/python -m dhlab.grading.generate
 
 clean:
 	rm -rf $(VENV) .pytest_cache build *.egg-info

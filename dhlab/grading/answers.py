@@ -1,0 +1,438 @@
+"""What a submission's answers are, as plain data, and how they are read.
+
+The answer cells of the PUMA notebook assign well-known names (``ANSWER_NAMES``).
+After a submission has run, the grader's runner asks the student's kernel to turn
+the values of those names into JSON with :func:`to_plain` (its source is sent into
+the kernel, so nothing the notebook did to ``dhlab`` changes how it works), and
+:func:`parse_answers` reads that JSON back in the grader's own process into an
+:class:`Answers` record. The notebook's own immediate feedback goes through the
+same two functions, so the notebook and the grader see the same data.
+
+Nothing here runs student code or evaluates text: a JSON value is either read
+as the expected kind of data or reported as unreadable.
+
+>>> raw = {"n_links": 7, "n_joints": 6, "joint_types": "RRRRRR", "x_cases": "..."}
+>>> a = parse_answers(raw)
+>>> a.n_links, a.joint_types, a.x_cases is NOT_ANSWERED, a.chain is NOT_ANSWERED
+(7, ['R', 'R', 'R', 'R', 'R', 'R'], True, True)
+"""
+from __future__ import annotations
+
+import json
+import math
+import re
+from dataclasses import dataclass, field
+
+__all__ = ["ANSWER_NAMES", "N_JOINTS", "NOT_ANSWERED", "Unreadable", "Answers", "Row", "Term",
+           "to_plain", "parse_answers", "parse_json", "answers_from_namespace", "MAX_JSON_BYTES"]
+
+N_JOINTS = 6
+ANSWER_NAMES = ("n_links", "n_joints", "joint_types", "x_cases", "link_points",
+                *(f"T{i}" for i in range(1, N_JOINTS + 1)), "chain")
+MAX_JSON_BYTES = 1_000_000
+
+
+class _NotAnswered:
+    """The marker of an answer left as ``...`` or missing."""
+
+    def __repr__(self):
+        return "NOT_ANSWERED"
+
+    def __bool__(self):
+        return False
+
+
+NOT_ANSWERED = _NotAnswered()
+
+
+@dataclass(frozen=True)
+class Unreadable:
+    """An answer that is there but is not the expected kind of data (``why`` says so)."""
+    why: str
+
+    def __bool__(self):
+        return False
+
+
+@dataclass(frozen=True)
+class Term:
+    """A length or an angle: ``const`` plus ``sign``·q_``joint`` (joint None: a constant).
+
+    Angles are in degrees, lengths in metres, as the student typed them.
+    """
+    const: float
+    joint: int | None = None
+    sign: int = 1
+
+    def text(self, unit: str = "") -> str:
+        """'q3 - 90°', '-q2', '0.15005' — as a student would write it."""
+        c = f"{_g(self.const)}{unit}"
+        if self.joint is None:
+            return c
+        var = ("-" if self.sign < 0 else "") + f"q{self.joint}"
+        if self.const == 0:
+            return var
+        return f"{var} {'-' if self.const < 0 else '+'} {_g(abs(self.const))}{unit}"
+
+
+def _g(x: float) -> str:
+    return f"{x:.6g}"
+
+
+@dataclass(frozen=True)
+class Row:
+    """One transformation ``T_i = Tz[θ_i, d_i] · Tx[α_i, a_i]`` (degrees, metres)."""
+    theta: Term
+    d: Term
+    alpha: float
+    a: float
+
+    def text(self) -> str:
+        return (f"Tz[{self.theta.text('°')}, {self.d.text()}]·"
+                f"Tx[{_g(self.alpha)}°, {_g(self.a)}]")
+
+    @property
+    def joint(self):
+        """(joint number, sign, where): the joint variable and whether it is in θ or d."""
+        if self.theta.joint is not None:
+            return self.theta.joint, self.theta.sign, "theta"
+        if self.d.joint is not None:
+            return self.d.joint, self.d.sign, "d"
+        return None, 1, None
+
+
+@dataclass
+class Answers:
+    """A submission's answers; each is a value, ``NOT_ANSWERED`` or an :class:`Unreadable`."""
+    n_links: object = NOT_ANSWERED
+    n_joints: object = NOT_ANSWERED
+    joint_types: object = NOT_ANSWERED         # list of 'R'/'P'
+    x_cases: object = NOT_ANSWERED             # list of 'intersect'/'parallel'/'skew' (or None per entry)
+    link_points: object = NOT_ANSWERED         # list over links 0…n: list of (x, y, z) or a marker
+    T: list = field(default_factory=lambda: [NOT_ANSWERED] * N_JOINTS)   # Row per T_i or a marker
+    chain: object = NOT_ANSWERED               # list of Row
+
+    def items(self) -> list:
+        """(name, value) of every answer, T1…Tn by name."""
+        out = [(name, getattr(self, name)) for name in ("n_links", "n_joints", "joint_types", "x_cases",
+                                                         "link_points")]
+        out += [(f"T{i}", value) for i, value in enumerate(self.T, start=1)]
+        return out + [("chain", self.chain)]
+
+    def answered(self) -> bool:
+        values = [self.n_links, self.n_joints, self.joint_types, self.x_cases, self.link_points,
+                  *self.T, self.chain]
+        return any(v is not NOT_ANSWERED for v in values)
+
+
+# --- in the student's kernel: values -> JSON-able plain data ------------------------------
+
+def to_plain(value, _depth=0, _budget=None):
+    """A JSON-able copy of ``value``: numbers, strings, lists, dicts; ``...`` -> None.
+
+    Self-contained on purpose (the runner sends its source into the kernel).
+    Objects of ``dhlab`` (``Tz(...) @ Tx(...)``, ``q3 + 90``) become
+    ``{"__dhlab__": class name, field: value, ...}``; anything else unknown becomes
+    ``{"__type__": name, "repr": ...}``. Sizes are capped, so a huge or cyclic value
+    cannot stall the grader.
+    """
+    if _budget is None:
+        _budget = [5000]
+    _budget[0] -= 1
+    if _budget[0] < 0 or _depth > 8:
+        return {"__type__": "too big", "repr": "(more than 5000 values or 8 levels deep)"}
+    if value is None or value is Ellipsis:
+        return None
+    if isinstance(value, bool):
+        return value
+    if isinstance(value, int):
+        return value if abs(value) < 10 ** 15 else float(value)
+    if isinstance(value, float):
+        return value if value == value and abs(value) != float("inf") else {"__type__": "float", "repr": repr(value)}
+    if isinstance(value, str):
+        return value[:300]
+    kind = type(value)
+    module = getattr(kind, "__module__", "") or ""
+    if module.startswith("numpy") and hasattr(value, "tolist"):
+        if getattr(value, "size", 1) > 2000:
+            return {"__type__": "too big", "repr": "an array of %s values" % getattr(value, "size", "?")}
+        return to_plain(value.tolist(), _depth + 1, _budget)
+    if module.startswith("dhlab."):
+        # dhlab's answer objects (Tz(...) @ Tx(...), chains, q_i + 90): their fields, read
+        # directly; no method of the object is called, so patching dhlab changes nothing
+        try:
+            fields = dict(object.__getattribute__(value, "__dict__"))
+        except Exception:
+            fields = {}
+        out = {"__dhlab__": kind.__name__[:40]}
+        for key, item in list(fields.items())[:20]:
+            if isinstance(key, str) and not key.startswith("_"):
+                out[key[:40]] = to_plain(item, _depth + 1, _budget)
+        return out
+    if isinstance(value, (list, tuple)):
+        if len(value) > 500:
+            return {"__type__": "too big", "repr": "a list of %d items" % len(value)}
+        return [to_plain(v, _depth + 1, _budget) for v in value]
+    if isinstance(value, dict):
+        if len(value) > 500:
+            return {"__type__": "too big", "repr": "a dict of %d items" % len(value)}
+        items = list(value.items())
+        if all(isinstance(k, str) for k, _ in items) and not {"__dict__", "__type__", "__dhlab__"} & set(value):
+            return {k[:100]: to_plain(v, _depth + 1, _budget) for k, v in items}
+        return {"__dict__": [[to_plain(k, _depth + 1, _budget), to_plain(v, _depth + 1, _budget)]
+                             for k, v in items]}
+    if hasattr(value, "__float__") and not isinstance(value, (bytes, bytearray)):
+        try:
+            number = float(value)
+            if number == number and abs(number) != float("inf"):
+                return number
+        except Exception:
+            pass
+    try:
+        text = repr(value)[:120]
+    except Exception:
+        text = "?"
+    return {"__type__": kind.__name__[:60], "repr": text}
+
+
+def answers_from_namespace(namespace) -> Answers:
+    """The answers in a namespace (the notebook's globals), through the same plain data."""
+    raw = {name: to_plain(namespace[name]) for name in ANSWER_NAMES if name in namespace}
+    return parse_answers(json.loads(json.dumps(raw)))
+
+
+# --- in the grader: JSON -> Answers ----------------------------------------------------
+
+def parse_json(text: str) -> Answers:
+    """:func:`parse_answers` of a JSON text, refusing texts that are too big or not JSON."""
+    if len(text) > MAX_JSON_BYTES:
+        raise ValueError(f"the answers are {len(text)} bytes of JSON, more than {MAX_JSON_BYTES}")
+    try:
+        raw = json.loads(text)
+    except (ValueError, RecursionError) as e:
+        raise ValueError(f"the answers are not valid JSON ({str(e)[:80]})") from None
+    if not isinstance(raw, dict):
+        raise ValueError("the answers are not a JSON object")
+    return parse_answers(raw)
+
+
+def parse_answers(raw: dict) -> Answers:
+    """Read each answer from plain data; what cannot be read becomes :class:`Unreadable`."""
+    out = Answers()
+    readers = {"n_links": _count, "n_joints": _count, "joint_types": _joint_types,
+               "x_cases": _x_cases, "link_points": _link_points, "chain": _chain}
+    for name, reader in readers.items():
+        setattr(out, name, _read(raw, name, reader))
+    out.T = [_read(raw, f"T{i}", _row) for i in range(1, N_JOINTS + 1)]
+    return out
+
+
+def _read(raw, name, reader):
+    if name not in raw or raw[name] is None:
+        return NOT_ANSWERED
+    value = raw[name]
+    if _is_ellipsis_only(value):
+        return NOT_ANSWERED
+    try:
+        return reader(value)
+    except _Bad as e:
+        return Unreadable(str(e))
+    except (TypeError, ValueError, KeyError, IndexError, AttributeError, OverflowError, RecursionError):
+        return Unreadable(f"cannot read {_show(value)}")
+
+
+class _Bad(Exception):
+    pass
+
+
+def _is_ellipsis_only(value) -> bool:
+    """True for ``...`` and for lists/dicts of nothing but ``...`` (a template left as is)."""
+    if value is None:
+        return True
+    if isinstance(value, str):
+        return value.strip() in ("", "...", "…")
+    if isinstance(value, list):
+        return all(_is_ellipsis_only(v) for v in value)
+    items = _dict_items(value)
+    if items is not None:
+        return all(_is_ellipsis_only(v) for _, v in items)
+    return False
+
+
+def _dict_items(value):
+    """The (key, value) pairs of a dict as :func:`to_plain` wrote it, or None if not a dict."""
+    if not isinstance(value, dict) or "__type__" in value or "__dhlab__" in value:
+        return None
+    if "__dict__" in value:
+        pairs = value["__dict__"]
+        if not isinstance(pairs, list) or not all(isinstance(p, list) and len(p) == 2 for p in pairs):
+            raise _Bad("unreadable dict")
+        return [tuple(p) for p in pairs]
+    return list(value.items())
+
+
+def _show(value) -> str:
+    if isinstance(value, dict) and value.get("__type__") == "too big":
+        return f"too much data ({value.get('repr', '')})"
+    if isinstance(value, dict) and "__type__" in value:
+        text = re.sub(r" at 0x[0-9a-fA-F]+", "", str(value.get("repr", "")))
+        return f"a {value['__type__']} ({text})"[:120]
+    if isinstance(value, dict) and "__dhlab__" in value:
+        return f"a dhlab {value['__dhlab__']}"
+    text = json.dumps(value)
+    return text if len(text) <= 80 else text[:77] + "..."
+
+
+def _number(value, what: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise _Bad(f"{what} must be a number, got {_show(value)}")
+    number = float(value)
+    if not math.isfinite(number):
+        raise _Bad(f"{what} must be a finite number, got {value}")
+    return number
+
+
+def _count(value) -> int:
+    if isinstance(value, str) and re.fullmatch(r"\s*\d+\s*", value):
+        value = int(value)
+    number = _number(value, "a count")
+    if number != int(number) or number < 0:
+        raise _Bad(f"must be a whole number, got {_show(value)}")
+    return int(number)
+
+
+_TYPE_WORDS = {"r": "R", "revolute": "R", "rotational": "R", "rotary": "R", "rotacional": "R",
+               "rotación": "R", "rotacion": "R", "revoluta": "R",
+               "p": "P", "prismatic": "P", "prismática": "P", "prismatica": "P", "linear": "P"}
+
+
+def _joint_types(value) -> list:
+    if isinstance(value, str):
+        words = [w for w in re.split(r"[\s,;/·\-]+", value.strip()) if w]
+        if len(words) == 1 and all(ch in "RrPp" for ch in words[0]):
+            return [ch.upper() for ch in words[0]]
+        value = words
+    if not isinstance(value, list):
+        raise _Bad(f"give one letter per joint, e.g. 'RRP', got {_show(value)}")
+    out = []
+    for item in value:
+        if not isinstance(item, str) or item.strip().lower() not in _TYPE_WORDS:
+            raise _Bad(f"{_show(item)} is not a joint type: use 'R' (revolute) or 'P' (prismatic)")
+        out.append(_TYPE_WORDS[item.strip().lower()])
+    return out
+
+
+_CASE_WORDS = {
+    "intersect": "intersect", "intersecting": "intersect", "intersects": "intersect",
+    "intersection": "intersect", "se intersecan": "intersect", "intersecan": "intersect",
+    "case 1": "intersect", "caso 1": "intersect", "1": "intersect",
+    "parallel": "parallel", "paralelos": "parallel", "paralelo": "parallel", "case 2": "parallel",
+    "caso 2": "parallel", "2": "parallel",
+    "skew": "skew", "neither": "skew", "case 3": "skew", "caso 3": "skew", "3": "skew",
+    "ni paralelos ni se intersecan": "skew", "cruzados": "skew", "se cruzan": "skew",
+    "coincident": "coincident", "coincide": "coincident", "coinciden": "coincident",
+}
+
+
+def _case(item):
+    if item is None:
+        return None
+    if isinstance(item, (int, float)) and not isinstance(item, bool):
+        item = str(int(item)) if float(item).is_integer() else str(item)
+    if not isinstance(item, str):
+        raise _Bad(f"{_show(item)} is not a case: use 'intersect', 'parallel' or 'skew'")
+    key = re.sub(r"\s+", " ", item.strip().lower().replace("_", " "))
+    if key not in _CASE_WORDS:
+        raise _Bad(f"{item!r} is not a case: use 'intersect', 'parallel' or 'skew'")
+    return _CASE_WORDS[key]
+
+
+def _x_cases(value) -> list:
+    items = _dict_items(value)
+    if items is not None:                                       # {1: "intersect", ...}
+        pairs = {}
+        for k, v in items:
+            digits = re.sub(r"\D", "", k) if isinstance(k, str) else k
+            if digits == "" or isinstance(digits, bool) or not isinstance(digits, (int, str)):
+                raise _Bad(f"the keys of x_cases must be the numbers i = 1…{N_JOINTS - 1}, got {_show(k)}")
+            pairs[_count(int(digits))] = v
+        value = [pairs.get(i) for i in range(1, max(pairs) + 1)] if pairs else []
+    if isinstance(value, str):
+        value = [w for w in re.split(r"\s*[,;]\s*", value.strip()) if w]
+    if not isinstance(value, list):
+        raise _Bad(f"give a list with one case per i, got {_show(value)}")
+    return [_case(item) for item in value]
+
+
+def _point(value, where: str) -> tuple:
+    if not isinstance(value, list) or len(value) != 3:
+        raise _Bad(f"{where} must be a point (x, y, z), got {_show(value)}")
+    return tuple(_number(v, where) for v in value)
+
+
+def _link_points(value) -> list:
+    """Links 0…n, each a list of points, from a list or a {link: points} dict."""
+    items = _dict_items(value)
+    if items is not None:
+        pairs = {}
+        for k, v in items:
+            if isinstance(k, str) and re.fullmatch(r"\D*\d+\s*", k):      # 3, "3", "link3"
+                k = int(re.sub(r"\D", "", k))
+            if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k <= 50:
+                raise _Bad(f"the keys must be link numbers 0…{N_JOINTS}, got {_show(k)}")
+            pairs[k] = v
+        value = [pairs.get(k) for k in range(max(max(pairs) + 1, N_JOINTS + 1))] if pairs else []
+    if not isinstance(value, list):
+        raise _Bad(f"give the points of links 0…{N_JOINTS}, got {_show(value)}")
+    out = []
+    for k, pts in enumerate(value):
+        if _is_ellipsis_only(pts):
+            out.append(NOT_ANSWERED)
+            continue
+        try:
+            if not isinstance(pts, list):
+                raise _Bad(f"link {k} must be a list of points (x, y, z), got {_show(pts)}")
+            out.append([_point(p, f"link {k}, point {j + 1}") for j, p in enumerate(pts)])
+        except _Bad as e:
+            out.append(Unreadable(str(e)))
+    return out
+
+
+def _dhlab(value, *names):
+    """The class name of a dhlab object's plain data, if it is one of ``names``."""
+    return isinstance(value, dict) and value.get("__dhlab__") in names
+
+
+def _term(value, what: str) -> Term:
+    if _dhlab(value, "JointTerm"):
+        joint, sign = value.get("joint"), value.get("sign", 1)
+        if isinstance(joint, bool) or not isinstance(joint, int) or not 1 <= joint <= 50:
+            raise _Bad(f"{what}: joint variable q{joint} does not exist")
+        if sign not in (1, -1):
+            raise _Bad(f"{what}: the joint variable must appear as +q or -q")
+        return Term(_number(value.get("const", 0), what), joint, int(sign))
+    return Term(_number(value, what))
+
+
+def _row(value) -> Row:
+    if _dhlab(value, "ZFactor", "XFactor"):
+        raise _Bad("it is a single factor: write T_i = Tz(θ, d) @ Tx(α, a)")
+    if not _dhlab(value, "DHTransform") or not _dhlab(value.get("z"), "ZFactor") \
+            or not _dhlab(value.get("x"), "XFactor"):
+        raise _Bad(f"write it as Tz(θ, d) @ Tx(α, a), got {_show(value)}")
+    z, x = value["z"], value["x"]
+    theta, d = _term(z.get("theta"), "θ"), _term(z.get("d"), "d")
+    alpha, a = _term(x.get("alpha"), "α"), _term(x.get("a"), "a")
+    if alpha.joint is not None or a.joint is not None:
+        raise _Bad("α and a are constants: the joint variable goes in θ (or in d for a prismatic joint)")
+    return Row(theta, d, alpha.const, a.const)
+
+
+def _chain(value) -> list:
+    if _dhlab(value, "DHTransform"):
+        return [_row(value)]
+    if not _dhlab(value, "DHChain") or not isinstance(value.get("transforms"), list):
+        raise _Bad(f"write it as T1 @ T2 @ ... @ T{N_JOINTS}, got {_show(value)}")
+    if not value["transforms"]:
+        raise _Bad("the chain has no transformations")
+    return [_row(v) for v in value["transforms"]]

@@ -1,0 +1,213 @@
+"""Make the student notebook from the source (solutions) notebook, the way nbgrader does.
+
+    python -m dhlab.grading.generate                      # notebooks/source/08_… -> notebooks/08_…
+    python -m dhlab.grading.generate SOURCE -o STUDENT
+    python -m dhlab.grading.generate --check              # exit 1 if the student notebook is out of date
+
+The source notebook is marked exactly as for nbgrader, so a teacher who uses
+nbgrader can drop it into ``source/<assignment>/`` and run ``nbgrader
+generate_assignment`` instead:
+
+* cell metadata ``metadata.nbgrader`` with the keys ``grade``, ``solution``, ``locked``,
+  ``grade_id``, ``points`` (grade cells) and ``schema_version`` 3;
+* in a solution cell, the lines from ``### BEGIN SOLUTION`` to ``### END SOLUTION``
+  become the code stub (indented like the BEGIN line); a solution cell without them
+  becomes the stub entirely (markdown: ``YOUR ANSWER HERE``);
+* in a grade cell, the lines from ``### BEGIN HIDDEN TESTS`` to ``### END HIDDEN TESTS``
+  are removed;
+* a delimiter in a cell without that metadata is an error; outputs are cleared;
+  solution cells become undeletable, grade and read-only cells also uneditable.
+
+The notebook's ``language_info`` is cut to its name, so the student version does
+not depend on the Python version the source was last run with.
+
+One difference, on purpose: the code stub is ``# YOUR CODE HERE`` without nbgrader's
+``raise NotImplementedError()``. The answer cells start with ``name = ...`` lines,
+so the student notebook runs from top to bottom and each check says "not answered".
+For the same result with nbgrader, set in ``nbgrader_config.py``::
+
+    c.ClearSolutions.code_stub = {"python": "# YOUR CODE HERE"}
+
+>>> cell = {"cell_type": "code", "source": "x = ...\\n### BEGIN SOLUTION\\nx = 7\\n### END SOLUTION",
+...         "metadata": {"nbgrader": {"grade": False, "solution": True, "locked": False,
+...                                   "grade_id": "a", "schema_version": 3}}, "outputs": []}
+>>> student_cell(cell)["source"]
+'x = ...\\n# YOUR CODE HERE'
+"""
+from __future__ import annotations
+
+import argparse
+import copy
+import json
+import re
+import sys
+from pathlib import Path
+
+__all__ = ["CODE_STUB", "TEXT_STUB", "GenerateError", "clear_solutions", "remove_hidden_tests",
+           "check_metadata", "student_cell", "student_notebook", "generate", "main",
+           "SOURCE", "STUDENT"]
+
+CODE_STUB = "# YOUR CODE HERE"
+TEXT_STUB = "YOUR ANSWER HERE"
+BEGIN_SOLUTION, END_SOLUTION = "BEGIN SOLUTION", "END SOLUTION"
+BEGIN_HIDDEN, END_HIDDEN = "BEGIN HIDDEN TESTS", "END HIDDEN TESTS"
+NBGRADER_KEYS = {"grade", "solution", "locked", "task", "grade_id", "points", "schema_version",
+                 "checksum", "cell_type"}
+
+_ROOT = Path(__file__).resolve().parents[2]
+SOURCE = _ROOT / "notebooks" / "source" / "08_puma_assignment.ipynb"
+STUDENT = _ROOT / "notebooks" / "08_puma_assignment.ipynb"
+
+
+class GenerateError(ValueError):
+    """The source notebook is not marked up the way nbgrader expects."""
+
+
+def _source(cell) -> str:
+    source = cell.get("source", "")
+    return "".join(source) if isinstance(source, list) else source
+
+
+def clear_solutions(source: str, stub: str) -> tuple:
+    """nbgrader's ClearSolutions on one cell's text: (new text, whether a region was replaced)."""
+    out, inside, replaced = [], False, False
+    for line in source.split("\n"):
+        if BEGIN_SOLUTION in line:
+            if inside:
+                raise GenerateError("nested BEGIN SOLUTION")
+            inside = replaced = True
+            indent = re.match(r"\s*", line).group(0)
+            out += [indent + s for s in stub.split("\n")]
+        elif END_SOLUTION in line:
+            inside = False
+        elif not inside:
+            out.append(line)
+    if inside:
+        raise GenerateError("BEGIN SOLUTION without END SOLUTION")
+    return "\n".join(out), replaced
+
+
+def remove_hidden_tests(source: str) -> tuple:
+    """nbgrader's ClearHiddenTests on one cell's text: (new text, whether a region was removed)."""
+    out, inside, removed = [], False, False
+    for line in source.split("\n"):
+        if BEGIN_HIDDEN in line:
+            if inside:
+                raise GenerateError("nested BEGIN HIDDEN TESTS")
+            inside = removed = True
+        elif END_HIDDEN in line:
+            inside = False
+        elif not inside:
+            out.append(line)
+    if inside:
+        raise GenerateError("BEGIN HIDDEN TESTS without END HIDDEN TESTS")
+    return "\n".join(out), removed
+
+
+def check_metadata(cells) -> None:
+    """The checks of nbgrader's schema 3 (CheckCellMetadata), with a clear message."""
+    ids = set()
+    for number, cell in enumerate(cells, start=1):
+        meta = cell.get("metadata", {}).get("nbgrader")
+        if meta is None:
+            continue
+        where = f"cell {number}"
+        unknown = set(meta) - NBGRADER_KEYS
+        missing = {"grade", "solution", "locked", "schema_version"} - set(meta)
+        if unknown or missing:
+            raise GenerateError(f"{where}: nbgrader metadata has unknown keys {sorted(unknown)} "
+                                f"or lacks {sorted(missing)}")
+        if meta["schema_version"] != 3:
+            raise GenerateError(f"{where}: schema_version must be 3")
+        if meta["grade"] or meta["solution"] or meta["locked"]:
+            gid = meta.get("grade_id")
+            if not isinstance(gid, str) or not re.fullmatch(r"[A-Za-z0-9_-]+", gid):
+                raise GenerateError(f"{where}: grade_id must match [A-Za-z0-9_-]+, got {gid!r}")
+            if gid in ids:
+                raise GenerateError(f"{where}: grade_id {gid!r} is used twice")
+            ids.add(gid)
+        if meta["grade"] and not isinstance(meta.get("points"), (int, float)):
+            raise GenerateError(f"{where}: a grade cell needs points")
+        if meta["grade"] and cell["cell_type"] == "markdown" and not meta["solution"]:
+            raise GenerateError(f"{where}: a markdown grade cell must also be a solution cell")
+
+
+def student_cell(cell: dict) -> dict:
+    """The student's version of one cell (a new dict)."""
+    cell = copy.deepcopy(cell)
+    meta = cell.get("metadata", {}).get("nbgrader", {})
+    is_solution, is_grade = bool(meta.get("solution")), bool(meta.get("grade"))
+    is_locked = bool(meta.get("locked")) and not is_solution
+    stub = CODE_STUB if cell["cell_type"] == "code" else TEXT_STUB
+    source, replaced = clear_solutions(_source(cell), stub)
+    if replaced and not is_solution:
+        raise GenerateError("a solution region in a cell that is not a solution cell:\n" + _source(cell)[:200])
+    if is_solution and not replaced:
+        source = stub
+    source, removed = remove_hidden_tests(source)
+    if removed and not is_grade:
+        raise GenerateError("a hidden-tests region in a cell that is not a grade cell:\n" + _source(cell)[:200])
+    cell["source"] = source
+    if cell["cell_type"] == "code":
+        cell["outputs"], cell["execution_count"] = [], None
+    cell.get("metadata", {}).pop("execution", None)
+    if is_solution or is_grade or is_locked:                   # nbgrader's LockCells
+        cell["metadata"]["deletable"] = False
+        if (is_grade or is_locked) and not is_solution:
+            cell["metadata"]["editable"] = False
+    return cell
+
+
+def student_notebook(nb: dict) -> dict:
+    """The student's version of a whole notebook (a new dict)."""
+    check_metadata(nb["cells"])
+    out = copy.deepcopy(nb)
+    out["cells"] = [student_cell(c) for c in nb["cells"]]
+    meta = out.setdefault("metadata", {})
+    meta.pop("widgets", None)
+    # what running the source wrote (the Python version...) is not part of the assignment
+    meta["language_info"] = {"name": meta.get("language_info", {}).get("name", "python")}
+    return out
+
+
+def _dumps(nb: dict) -> str:
+    """The file text, as nbformat writes it (so a generated notebook is byte-stable)."""
+    import nbformat
+    return nbformat.writes(nbformat.from_dict(nb))
+
+
+def generate(source=SOURCE, student=STUDENT, check: bool = False) -> bool:
+    """Write the student notebook (or, with ``check``, only compare). True if it is up to date."""
+    nb = json.loads(Path(source).read_text(encoding="utf-8"))
+    text = _dumps(student_notebook(nb))
+    student = Path(student)
+    current = student.read_text(encoding="utf-8") if student.exists() else None
+    if check:
+        return current == text
+    if current != text:
+        student.write_text(text, encoding="utf-8")
+    return True
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("source", nargs="?", type=Path, default=SOURCE)
+    parser.add_argument("-o", "--output", type=Path, default=None,
+                        help="the student notebook (default: notebooks/<name> for the course's source)")
+    parser.add_argument("--check", action="store_true", help="only check that the student notebook is up to date")
+    args = parser.parse_args(argv)
+    output = args.output or (STUDENT if args.source.resolve() == SOURCE else args.source.parent.parent / args.source.name)
+    try:
+        ok = generate(args.source, output, check=args.check)
+    except GenerateError as e:
+        print(f"{args.source}: {e}", file=sys.stderr)
+        return 2
+    if args.check and not ok:
+        print(f"{output} is out of date: run python -m dhlab.grading.generate", file=sys.stderr)
+        return 1
+    print(f"{output} {'is up to date' if args.check else 'written'}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,119 @@
+"""The gradebook (a CSV) and one feedback file per submission, written atomically.
+
+A file is written to a temporary name in the same folder and then renamed over the
+old one (:func:`os.replace`), so a reader — or a second grading run — never sees a
+half-written gradebook, even if the grader is stopped in the middle.
+
+>>> status_text({"errors": [[4, "NameError", "name 'T9' is not defined"]]}, report_answered=True)
+"error in cell 4 (NameError: name 'T9' is not defined)"
+"""
+from __future__ import annotations
+
+import csv
+import io
+import os
+import re
+import tempfile
+from pathlib import Path
+
+__all__ = ["COLUMNS", "PART_COLUMNS", "write_atomic", "write_csv", "feedback_filename", "status_text",
+           "feedback_text"]
+
+PART_COLUMNS = {"part1": "part1_sketch", "part2": "part2_links", "part3": "part3_transforms"}
+COLUMNS = ["submission", "score", "max_score", "status", *PART_COLUMNS.values(), "seconds", "feedback"]
+
+
+def write_atomic(path, text: str) -> None:
+    """Write ``text`` to ``path`` so that the file is either the old one or the new one."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
+            f.write(text)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def write_csv(path, rows) -> None:
+    """The gradebook: one row per submission (dicts with the keys of ``COLUMNS``)."""
+    buffer = io.StringIO()
+    writer = csv.DictWriter(buffer, fieldnames=COLUMNS, extrasaction="ignore")
+    writer.writeheader()
+    for row in sorted(rows, key=lambda r: r["submission"]):
+        writer.writerow(row)
+    write_atomic(path, buffer.getvalue())
+
+
+def feedback_filename(submission: str) -> str:
+    """A safe file name for a submission's feedback: 'alice/ps1/puma' -> 'alice__ps1__puma.txt'."""
+    name = re.sub(r"[^A-Za-z0-9._-]+", "_", submission.replace("/", "__")).strip("._") or "submission"
+    return name[:150] + ".txt"
+
+
+def _cells(numbers) -> str:
+    numbers = list(numbers)
+    return ("cell " if len(numbers) == 1 else "cells ") + ", ".join(str(n) for n in numbers)
+
+
+def status_text(run: dict, report_answered: bool, answers_problem: str = "") -> str:
+    """One line for the gradebook's status column: 'ok', or every reason, joined by '; '."""
+    reasons = []
+    if run.get("notebook_error"):
+        reasons.append(f"invalid notebook: {run['notebook_error']}")
+    if run.get("grader_error"):
+        reasons.append(f"grader error: {run['grader_error']}")
+    memory = [e for e in run.get("errors", []) if e[1] == "MemoryError"]
+    others = [e for e in run.get("errors", []) if e[1] != "MemoryError"]
+    if memory:
+        reasons.append(f"memory limit reached in {_cells(e[0] for e in memory)} (MemoryError)")
+    if others:
+        first = others[0]
+        detail = f" ({first[1]}: {first[2]})" if first[2] else f" ({first[1]})"
+        reasons.append(f"error in {_cells(e[0] for e in others)}" + (detail if len(others) == 1 else
+                                                                     f", first{detail}"))
+    if run.get("timeouts"):
+        reasons.append(f"timeout: {_cells(run['timeouts'])} stopped at the time limit")
+    if run.get("output_capped"):
+        sizes = ", ".join(f"{b / 1e6:.1f} MB in cell {c}" for c, b in run["output_capped"])
+        reasons.append(f"output limit: printed {sizes} (stopped, run again without it)")
+    if run.get("kernel_died"):
+        reasons.append(f"kernel died in {_cells(run['kernel_died'])} (run again without it)")
+    if run.get("stuck"):
+        reasons.append(f"{_cells(run['stuck'])} could not be interrupted (run again without it)")
+    if run.get("runner_killed"):
+        reasons.append(f"the grader's runner was killed in {_cells(run['runner_killed'])} (run again without it)")
+    if run.get("out_of_time"):
+        reasons.append("time limit for the whole notebook reached")
+    if run.get("answers_error"):
+        reasons.append(f"answers not read: {run['answers_error']}")
+    if answers_problem:
+        reasons.append(answers_problem)
+    if run.get("tampering"):
+        reasons.append(f"modifies dhlab, ignored ({run['tampering'][0]})")
+    if not report_answered and not run.get("notebook_error"):
+        reasons.append("not answered")
+    return "; ".join(reasons) or "ok"
+
+
+def feedback_text(submission: str, run: dict, report, status: str) -> str:
+    """The feedback file of one submission: the score, what happened, every check."""
+    lines = [f"Submission: {submission}", f"Status: {status}", ""]
+    lines.append(report.text())
+    details = []
+    for number, ename, evalue in run.get("errors", []):
+        details.append(f"cell {number} raised {ename}" + (f": {evalue}" if evalue else ""))
+    if run.get("skipped"):
+        details.append(f"the notebook was run again without {_cells(run['skipped'])}")
+    if run.get("tampering"):
+        details += [f"{t} (this has no effect: the grader checks your answers in its own process)"
+                    for t in run["tampering"]]
+    if details:
+        lines += ["How your notebook ran:", *[f"  - {d}" for d in details], ""]
+    lines.append("Your answers were read from the variables n_links, n_joints, joint_types, x_cases, "
+                 "link_points, T1…T6 and chain after your notebook ran, and checked by the grader.")
+    return "\n".join(lines) + "\n"

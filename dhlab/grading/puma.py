@@ -1,0 +1,350 @@
+"""The PUMA 560 that the assignment is checked against, and the geometry of lines.
+
+The reference is :func:`dhlab.robots.puma560` (P. Corke's ``mdl_puma560``, metres),
+with **frame 0 at the shoulder**: the world frame of the assignment's picture, origin
+where the axes of joints 1 and 2 meet, z0 up along joint 1, x0 forward (towards the
+arm in the home pose). The joint variables are the physical joint angles measured
+from the pictured home pose (q = 0), positive by the right-hand rule about the drawn
+arrow of each joint axis. Frame 6 (the end effector, *efector final*) has its origin
+at the wrist centre W, where the axes of joints 4, 5 and 6 meet.
+
+What every valid DH answer shares (DH frames are not unique) is computed here from
+the reference robot, never typed: the **joint axes** as directed lines, the wrist
+centre, and the **links' points** in the world at the home pose.
+
+>>> ref = reference()
+>>> [round(float(v), 5) for v in ref.wrist_centre]
+[0.4521, -0.15005, 0.4318]
+>>> [relation(ref.axes[i], ref.axes[i + 1]).kind for i in range(5)]
+['intersect', 'parallel', 'skew', 'intersect', 'intersect']
+"""
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["Line", "Relation", "relation", "Reference", "reference", "LINK_NAMES",
+           "dh_frames", "TOL_POS", "TOL_DEG"]
+
+TOL_POS = 2e-3        # metres: a student who types 0.15 for 0.15005 is right
+TOL_DEG = 0.5         # degrees, for directions
+
+LINK_NAMES = ["base (pedestal)", "trunk", "upper arm", "forearm", "wrist yoke", "wrist", "gripper"]
+
+
+@dataclass(frozen=True)
+class Line:
+    """A directed line: a point on it and a unit direction."""
+    point: np.ndarray
+    direction: np.ndarray
+
+    def distance_to_point(self, p) -> float:
+        v = np.asarray(p, float) - self.point
+        return float(np.linalg.norm(v - (v @ self.direction) * self.direction))
+
+
+@dataclass(frozen=True)
+class Relation:
+    """How two lines meet: ``kind`` is 'intersect', 'parallel', 'skew' or 'coincident'.
+
+    ``angle`` is the angle between the lines (degrees, 0…90, ignoring direction),
+    ``distance`` the length of their common normal, ``foot`` the point of the second
+    line nearest the first (where the DH origin goes), ``normal`` the unit common
+    normal from the first line towards the second (for intersecting lines, the
+    direction of first × second; None for coincident lines).
+    """
+    kind: str
+    angle: float
+    distance: float
+    foot: np.ndarray
+    normal: np.ndarray | None
+
+
+def relation(l1: Line, l2: Line, tol: float = TOL_POS) -> Relation:
+    """The relation of two lines (the three cases for x_i of the DH convention)."""
+    u, v = l1.direction, l2.direction
+    w = l2.point - l1.point
+    cross = np.cross(u, v)
+    angle = math.degrees(math.acos(min(1.0, abs(float(u @ v)))))
+    if np.linalg.norm(cross) < math.sin(math.radians(TOL_DEG)):
+        perp = w - (w @ u) * u                      # from line 1 to line 2, square to both
+        dist = float(np.linalg.norm(perp))
+        if dist <= tol:
+            return Relation("coincident", angle, dist, l2.point.copy(), None)
+        return Relation("parallel", angle, dist, l2.point.copy(), perp / dist)
+    n = cross / np.linalg.norm(cross)
+    signed = float(w @ n)
+    # the points of the two lines nearest each other: l1.point + s u, l2.point + t v
+    a, b, c = 1.0, float(u @ v), 1.0
+    d, e = float(u @ w), float(v @ w)
+    den = a * c - b * b
+    t = (b * d - a * e) / den
+    foot = l2.point + t * v
+    if abs(signed) <= tol:
+        return Relation("intersect", angle, abs(signed), foot, n)
+    return Relation("skew", angle, abs(signed), foot, n * math.copysign(1.0, signed))
+
+
+def dh_frames(rows, Q) -> np.ndarray:
+    """Frames 0…n of a chain of ``Tz[θ, d]·Tx[α, a]`` factors, batched.
+
+    ``rows``: per link ``(sign, joint, theta_const, d, a, alpha)`` with angles in
+    radians; θ = sign·q[joint] + theta_const (``joint`` None: θ constant).
+    ``Q``: (N, n) radians. Returns (N, n+1, 4, 4), frame 0 = identity.
+    """
+    Q = np.atleast_2d(np.asarray(Q, float))
+    N = len(Q)
+    out = np.zeros((N, len(rows) + 1, 4, 4))
+    T = np.broadcast_to(np.eye(4), (N, 4, 4)).copy()
+    out[:, 0] = T
+    for k, (sign, joint, th0, d, a, al) in enumerate(rows):
+        th = th0 + (sign * Q[:, joint] if joint is not None else 0.0)
+        ct, st, ca, sa = np.cos(th), np.sin(th), math.cos(al), math.sin(al)
+        A = np.zeros((N, 4, 4))
+        A[:, 0, 0], A[:, 0, 1], A[:, 0, 2], A[:, 0, 3] = ct, -st * ca, st * sa, a * ct
+        A[:, 1, 0], A[:, 1, 1], A[:, 1, 2], A[:, 1, 3] = st, ct * ca, -ct * sa, a * st
+        A[:, 2, 1], A[:, 2, 2], A[:, 2, 3], A[:, 3, 3] = sa, ca, d, 1.0
+        T = T @ A
+        out[:, k + 1] = T
+    return out
+
+
+@dataclass
+class Reference:
+    """The reference PUMA: its DH rows, home-pose axes and points, and the valid frames."""
+    robot: object                 # dhlab DHRobot
+    rows: list                    # (sign, joint, θ0, d, a, α) per link, radians
+    axes: list                    # Line per joint 1…n at home (index 0 = joint 1)
+    wrist_centre: np.ndarray
+    points: list                  # per link k: list of (label, world xyz at home)
+    home_frames: np.ndarray       # (n+1, 4, 4) reference DH frames at home
+
+    @property
+    def n(self) -> int:
+        return len(self.rows)
+
+    def frames(self, Q) -> np.ndarray:
+        return dh_frames(self.rows, Q)
+
+    def axes_at(self, Q):
+        """Joint axes at configurations Q (N, n): points (N, n, 3) and directions (N, n, 3)."""
+        F = self.frames(Q)
+        return F[:, :-1, :3, 3], F[:, :-1, :3, 2]
+
+    def world_points(self, k: int) -> np.ndarray:
+        return np.array([p for _, p in self.points[k]])
+
+    def local_points(self, k: int) -> np.ndarray:
+        """Link k's points in the reference DH frame k (one valid answer of part 2)."""
+        F = self.home_frames[k]
+        return (self.world_points(k) - F[:3, 3]) @ F[:3, :3]
+
+
+def _floats(link):
+    return float(link.d), float(link.a), float(link.alpha), float(link.offset)
+
+
+@functools.lru_cache(maxsize=1)
+def reference() -> Reference:
+    """The reference PUMA 560 (built once)."""
+    from ..robots import puma560
+
+    robot = puma560()
+    rows = []
+    for j, link in enumerate(robot.links):
+        d, a, alpha, offset = _floats(link)
+        rows.append((1, j, offset, d, a, alpha))
+    home = dh_frames(rows, np.zeros((1, len(rows))))[0]
+    axes = [Line(home[i, :3, 3].copy(), home[i, :3, 2].copy()) for i in range(len(rows))]
+    W = home[-1, :3, 3].copy()
+    floor = float(puma560(floor=True).links[0].d)       # pedestal height, 0.67183 m
+    return Reference(robot, rows, axes, W, _link_points(robot, W, floor), home)
+
+
+def _link_points(robot, W, floor) -> list:
+    """The labelled points that draw each link (world, home pose, metres).
+
+    Built from the DH lengths (a2, a3, d3, d4) and the pedestal height, so nothing
+    is typed twice; the few other numbers only shape the drawing (the pedestal's
+    top, the yoke, the gripper) and are not part of the DH model.
+    """
+    a2, a3 = float(robot.links[1].a), float(robot.links[2].a)
+    d3 = float(robot.links[2].d)
+    side = np.array([0.0, -1.0, 0.0])             # joints 2, 3, 5 point this way at home
+    up = np.array([0.0, 0.0, 1.0])
+    S = np.zeros(3)                               # shoulder: axes 1 and 2 meet (frame 0)
+    A = S + d3 * side                             # where the upper arm sits on axis 2
+    E = A + np.array([a2, 0.0, 0.0])              # elbow, on axis 3
+    K = E + np.array([a3, 0.0, 0.0])              # on the forearm axis (joint 4)
+    M = W - 0.08 * up                             # top of the forearm
+    Y = M + 0.05 * side                           # the yoke's arm ...
+    N = W + 0.05 * side                           # ... reaching axis 5
+    F = W + 0.056 * up                            # flange, on axis 6
+    g = 0.03 * side
+    return [
+        [("O", S - floor * up), ("B", S - 0.25 * up)],
+        [("B", S - 0.25 * up), ("S", S), ("A", A)],
+        [("A", A), ("E", E)],
+        [("E", E), ("K", K), ("M", M)],
+        [("M", M), ("Y", Y), ("N", N)],
+        [("N", N), ("W", W.copy()), ("F", F)],
+        [("G1", F - g + 0.04 * up), ("G2", F - g), ("G3", F + g), ("G4", F + g + 0.04 * up)],
+    ]
+
+
+# --- the valid DH frames of each link -------------------------------------------------
+
+@dataclass
+class FrameFamily:
+    """Every valid DH frame k at home: ``base · Rz(φ) · Tr(0, 0, t)`` for each base in
+    ``bases``, with φ free when ``spin`` and t free when ``shift`` (else both 0)."""
+    bases: list
+    spin: bool
+    shift: bool
+
+
+def _frame(origin, x, z) -> np.ndarray:
+    F = np.eye(4)
+    F[:3, 0], F[:3, 2] = x, z
+    F[:3, 1] = np.cross(z, x)
+    F[:3, 3] = origin
+    return F
+
+
+def _any_perpendicular(z) -> np.ndarray:
+    helper = np.array([1.0, 0, 0]) if abs(z[0]) < 0.9 else np.array([0, 1.0, 0])
+    x = helper - (helper @ z) * z
+    return x / np.linalg.norm(x)
+
+
+def frame_family(ref: Reference, k: int) -> FrameFamily:
+    """The valid DH frames for link k at the home pose.
+
+    Frame 0 is the pictured world frame (fixed). For 1 ≤ k < n: z_k along the axis
+    of joint k+1 (either sense), x_k along the common normal of the axes of joints k
+    and k+1 (either sense), origin where x_k meets z_k; when the axes are parallel the
+    origin may slide along z_k; when they coincide x_k may also turn. Frame n: origin
+    at the wrist centre, z_n along the axis of joint n, x_n free about it.
+    """
+    n = ref.n
+    if k == 0:
+        return FrameFamily([np.eye(4)], False, False)
+    if k == n:
+        w = ref.axes[n - 1].direction
+        x = _any_perpendicular(w)
+        return FrameFamily([_frame(ref.wrist_centre, x, w), _frame(ref.wrist_centre, x, -w)], True, False)
+    rel = relation(ref.axes[k - 1], ref.axes[k])
+    w = ref.axes[k].direction
+    bases = []
+    for sz in (1, -1):
+        if rel.normal is None:                       # coincident axes
+            bases.append(_frame(rel.foot, _any_perpendicular(w), sz * w))
+            continue
+        for sx in (1, -1):
+            bases.append(_frame(rel.foot, sx * rel.normal, sz * w))
+    return FrameFamily(bases, spin=rel.normal is None, shift=rel.kind in ("parallel", "coincident"))
+
+
+def _member(base, phi, t):
+    c, s = math.cos(phi), math.sin(phi)
+    M = np.array([[c, -s, 0, 0], [s, c, 0, 0], [0, 0, 1, t], [0, 0, 0, 1.0]])
+    return base @ M
+
+
+def rotation_angle(R1, R2) -> float:
+    """The angle (degrees) of the rotation that takes R1 to R2."""
+    c = (np.trace(R1.T @ R2) - 1) / 2
+    return math.degrees(math.acos(max(-1.0, min(1.0, c))))
+
+
+def nearest_valid_frame(ref: Reference, k: int, F) -> tuple:
+    """The valid DH frame k nearest to ``F`` (home pose): (frame, angle°, distance m)."""
+    family = frame_family(ref, k)
+    best = None
+    for base in family.bases:
+        local = np.linalg.inv(base) @ F
+        phi = math.atan2(local[1, 0], local[0, 0]) if family.spin else 0.0
+        t = local[2, 3] if family.shift else 0.0
+        C = _member(base, phi, t)
+        angle = rotation_angle(C[:3, :3], F[:3, :3])
+        dist = float(np.linalg.norm(C[:3, 3] - F[:3, 3]))
+        score = math.radians(angle) + dist / 0.1
+        if best is None or score < best[0]:
+            best = (score, C, angle, dist)
+    return best[1], best[2], best[3]
+
+
+def is_valid_frame(ref: Reference, k: int, F) -> bool:
+    _, angle, dist = nearest_valid_frame(ref, k, F)
+    return angle <= TOL_DEG and dist <= TOL_POS
+
+
+def fit_link(ref: Reference, k: int, local_points) -> tuple:
+    """The valid DH frame k in which ``local_points`` land best on link k's points.
+
+    Returns (frame, worst point distance in metres).
+    """
+    family = frame_family(ref, k)
+    P = np.asarray(local_points, float)
+    W = ref.world_points(k)
+    best = None
+    for base in family.bases:
+        U = (W - base[:3, 3]) @ base[:3, :3]            # the world points in the base frame
+        phi = 0.0
+        if family.spin:
+            num = float(np.sum(P[:, 0] * U[:, 1] - P[:, 1] * U[:, 0]))
+            den = float(np.sum(P[:, 0] * U[:, 0] + P[:, 1] * U[:, 1]))
+            phi = math.atan2(num, den) if abs(num) + abs(den) > 1e-12 else 0.0
+        c, s = math.cos(phi), math.sin(phi)
+        rotated = P @ np.array([[c, s, 0], [-s, c, 0], [0, 0, 1.0]])
+        t = float(np.mean(U[:, 2] - rotated[:, 2])) if family.shift else 0.0
+        C = _member(base, phi, t)
+        err = float(np.max(np.linalg.norm(P @ C[:3, :3].T + C[:3, 3] - W, axis=1)))
+        if best is None or err < best[1]:
+            best = (C, err)
+    return best
+
+
+# --- other valid answers: the free choices of the DH convention ------------------------------
+
+def random_valid_frames(rng) -> list:
+    """A random valid set of DH frames 0…n at home: each frame a random member of its
+    family (signs of z and x, origins slid along parallel axes, the last x turned)."""
+    ref = reference()
+    frames = []
+    for k in range(ref.n + 1):
+        family = frame_family(ref, k)
+        base = family.bases[int(rng.integers(len(family.bases)))]
+        phi = float(rng.uniform(-math.pi, math.pi)) if family.spin else 0.0
+        t = float(rng.uniform(-0.3, 0.3)) if family.shift else 0.0
+        frames.append(_member(base, phi, t))
+    return frames
+
+
+def dh_rows_from_frames(frames) -> list:
+    """The DH rows that carry ``frames`` (home pose) into each other, with the joint
+    variables of the PUMA: per link ``(sign, θ0°, d, a, α°)`` meaning
+    ``T_i = Tz[sign·q_i + θ0, d]·Tx[α, a]``; sign = −1 where z_{i−1} points against
+    the joint's drawn positive sense.
+
+    >>> rows = dh_rows_from_frames(reference().home_frames)
+    >>> [tuple(round(v, 5) + 0.0 for v in row) for row in rows][:3]
+    [(1.0, 0.0, 0.0, 0.0, 90.0), (1.0, 0.0, 0.0, 0.4318, 0.0), (1.0, 0.0, 0.15005, 0.0203, -90.0)]
+    """
+    ref = reference()
+    rows = []
+    for k in range(1, len(frames)):
+        A = np.linalg.inv(frames[k - 1]) @ frames[k]
+        theta = math.atan2(A[1, 0], A[0, 0])
+        alpha = math.atan2(A[2, 1], A[2, 2])
+        d = A[2, 3]
+        a = A[0, 3] * math.cos(theta) + A[1, 3] * math.sin(theta)
+        check = dh_frames([(1, None, theta, d, a, alpha)], np.zeros((1, 1)))[0, 1]
+        if not np.allclose(check, A, atol=1e-9):
+            raise ValueError(f"frames {k - 1} and {k} are not related by Tz·Tx (not DH frames)")
+        sign = 1 if frames[k - 1][:3, 2] @ ref.axes[k - 1].direction > 0 else -1
+        rows.append((sign, math.degrees(theta), float(d), float(a), math.degrees(alpha)))
+    return rows

@@ -1,0 +1,498 @@
+"""Run one submitted notebook in a fresh, limited kernel and collect its answers as plain data.
+
+The grader starts one runner process per submission::
+
+    python dhlab/grading/runner.py NOTEBOOK RESULT.json [--timeout 30] [--total-timeout 120]
+                                   [--memory-mb 2048] [--output-mb 10]
+    (python -m dhlab.grading.runner ... works too)
+
+What it does, and why:
+
+1. Reads the notebook as JSON (a file that is not JSON, or not a notebook, is reported,
+   not run).
+2. Starts a **fresh kernel** through :mod:`dhlab.grading.sandbox`, which lowers the
+   kernel's resource limits (memory, CPU, file size) before IPython starts.
+3. Runs every code cell in order, as the student would with "Run all". A cell that
+   raises does not stop the others (its error is recorded). A cell that runs longer
+   than ``--timeout`` seconds is interrupted. If the kernel dies, cannot be
+   interrupted, or a cell prints more than ``--output-mb``, a new kernel runs the
+   notebook again without that cell. All of it within ``--total-timeout`` seconds.
+4. Asks the kernel to write the values of the answer names as JSON (the source of
+   :func:`dhlab.grading.answers.to_plain` is sent in, so a notebook that changed
+   ``dhlab`` cannot change how its answers are read), and reads that file — never
+   anything the notebook printed.
+5. Writes what happened and the answers' JSON text to ``RESULT.json``. It scores
+   nothing: the grader scores in its own process.
+
+The outputs of the cells are counted, not kept.
+"""
+from __future__ import annotations
+
+import argparse
+import ast
+import inspect
+import json
+import os
+import queue
+import secrets
+import shutil
+import sys
+import tempfile
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+try:
+    from .answers import ANSWER_NAMES, MAX_JSON_BYTES, to_plain
+    from .sandbox import OUTPUT_LIMIT_NOTE, apply_limits
+except ImportError:      # started as a script by the grader (see RUNNER below)
+    from answers import ANSWER_NAMES, MAX_JSON_BYTES, to_plain
+    from sandbox import OUTPUT_LIMIT_NOTE, apply_limits
+
+__all__ = ["RunResult", "run_notebook", "read_code_cells", "scan_for_tampering", "main",
+           "NotebookError", "MAX_NOTEBOOK_BYTES"]
+
+# The grader starts this file, and the kernel's launcher, as scripts (python .../runner.py),
+# not with -m: so these processes do not import the whole dhlab package (numpy, sympy, ...).
+# That saves half a second per submission, and the only dhlab files they read from disk are
+# the three of this folder (answers.py, runner.py, sandbox.py), which the grader fingerprints.
+RUNNER = Path(__file__).resolve()
+SANDBOX = RUNNER.with_name("sandbox.py")
+MAX_NOTEBOOK_BYTES = 20_000_000
+EXTRACT_SECONDS = 20
+INTERRUPT_GRACE = 5
+MAX_ATTEMPTS = 3
+
+
+class NotebookError(Exception):
+    """The file cannot be run as a notebook (the message says why)."""
+
+
+@dataclass
+class RunResult:
+    """What happened to one submission (plain data, written as JSON for the grader)."""
+    notebook_error: str = ""
+    cells: int = 0                                   # code cells in the notebook
+    errors: list = field(default_factory=list)       # [cell, ename, evalue]
+    timeouts: list = field(default_factory=list)     # cells interrupted after --timeout
+    output_capped: list = field(default_factory=list)  # [cell, bytes]
+    kernel_died: list = field(default_factory=list)  # cells during which the kernel died
+    stuck: list = field(default_factory=list)        # cells that could not be interrupted
+    skipped: list = field(default_factory=list)      # cells left out of a re-run
+    runner_killed: list = field(default_factory=list)  # cells during which the runner itself was killed
+    out_of_time: bool = False                        # --total-timeout reached
+    restarts: int = 0
+    tampering: list = field(default_factory=list)    # what the notebook does to dhlab
+    answers_json: str | None = None
+    answers_error: str = ""
+    grader_error: str = ""
+    seconds: float = 0.0
+
+
+# --- reading and scanning the notebook ------------------------------------------------------
+
+def read_code_cells(path) -> list:
+    """[(cell number, source)] of the code cells, numbered 1… over all cells as in Jupyter."""
+    path = Path(path)
+    size = path.stat().st_size
+    if size > MAX_NOTEBOOK_BYTES:
+        raise NotebookError(f"the file is {size / 1e6:.1f} MB, more than {MAX_NOTEBOOK_BYTES / 1e6:.0f} MB")
+    raw = path.read_bytes()
+    try:
+        nb = json.loads(raw.decode("utf-8"))
+    except UnicodeDecodeError:
+        raise NotebookError("not a notebook: the file is not UTF-8 text") from None
+    except (ValueError, RecursionError) as e:
+        raise NotebookError(f"not a notebook: the file is not valid JSON ({str(e)[:80]})") from None
+    cells = nb.get("cells") if isinstance(nb, dict) else None
+    if isinstance(nb, dict) and cells is None and isinstance(nb.get("worksheets"), list):   # nbformat 3
+        cells = [c for ws in nb["worksheets"] if isinstance(ws, dict) for c in ws.get("cells", [])]
+    if not isinstance(cells, list):
+        raise NotebookError("not a notebook: no list of cells")
+    out = []
+    for number, cell in enumerate(cells, start=1):
+        if not isinstance(cell, dict) or cell.get("cell_type") != "code":
+            continue
+        source = cell.get("source", cell.get("input", ""))      # 'input' in nbformat 3
+        if isinstance(source, list):
+            source = "".join(s for s in source if isinstance(s, str))
+        if not isinstance(source, str):
+            raise NotebookError(f"cell {number} has no readable source")
+        out.append((number, source))
+    return out
+
+
+_DHLAB_CHECK_NAMES = {"check_part", "check_part1", "check_part2", "check_part3", "check_all",
+                      "Feedback", "to_plain", "parse_answers", "answers_from_namespace"}
+
+
+def scan_for_tampering(cells) -> list:
+    """What the notebook's code does to dhlab: assignments to attributes of dhlab
+    modules, ``setattr`` on them, ``sys.modules`` entries, redefined check functions.
+
+    It changes nothing (the grader checks in its own process); the teacher sees it
+    in the status.
+
+    >>> scan_for_tampering([(3, "import dhlab.assignment as A\\nA.check_part1 = lambda ns: 'all right'")])
+    ['cell 3: assigns A.check_part1']
+    """
+    found = []
+    dhlab_names = set()
+    for number, source in cells:
+        code = "\n".join("" if line.lstrip().startswith(("%", "!")) else line for line in source.splitlines())
+        try:
+            tree = ast.parse(code)
+        except (SyntaxError, ValueError, RecursionError, MemoryError):
+            continue
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                for alias in node.names:
+                    if alias.name.split(".")[0] == "dhlab":
+                        dhlab_names.add((alias.asname or alias.name).split(".")[0])
+            elif isinstance(node, ast.ImportFrom) and (node.module or "").split(".")[0] == "dhlab":
+                for alias in node.names:
+                    dhlab_names.add(alias.asname or alias.name)
+        for node in ast.walk(tree):
+            targets = []
+            if isinstance(node, (ast.Assign, ast.AugAssign, ast.AnnAssign)):
+                targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+                if node.name in _DHLAB_CHECK_NAMES and node.name in dhlab_names:
+                    found.append(f"cell {number}: redefines {node.name}")
+            elif (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+                  and node.func.id in ("setattr", "delattr") and node.args
+                  and _root(node.args[0]) in dhlab_names | {"dhlab"}):
+                found.append(f"cell {number}: {node.func.id} on {ast.unparse(node.args[0])[:40]}")
+            for target in targets:
+                for t in (target.elts if isinstance(target, ast.Tuple) else [target]):
+                    text = ast.unparse(t)[:60]
+                    if isinstance(t, ast.Attribute) and _root(t) in dhlab_names | {"dhlab"}:
+                        found.append(f"cell {number}: assigns {text}")
+                    elif isinstance(t, ast.Subscript) and "sys.modules" in ast.unparse(t.value):
+                        found.append(f"cell {number}: assigns {text}")
+                    elif isinstance(t, ast.Name) and t.id in _DHLAB_CHECK_NAMES and t.id in dhlab_names:
+                        found.append(f"cell {number}: redefines {t.id}")
+    return found[:10]
+
+
+def _root(node):
+    while isinstance(node, (ast.Attribute, ast.Subscript, ast.Call)):
+        node = node.func if isinstance(node, ast.Call) else node.value
+    return node.id if isinstance(node, ast.Name) else None
+
+
+# --- the kernel ------------------------------------------------------------------------------
+
+@dataclass
+class _Cell:
+    status: str = "ok"          # ok | error | timeout | output | dead | stuck
+    stopped_for: str = ""       # timeout | output: why the runner interrupted it
+    ename: str = ""
+    evalue: str = ""
+    output_bytes: int = 0
+    capped_in_kernel: bool = False
+
+
+class _Kernel:
+    """A kernel started through the sandbox launcher, driven cell by cell."""
+
+    def __init__(self, workdir: Path, memory_mb: float, cpu_seconds: float, file_mb: float,
+                 output_mb: float, pid_file: Path | None, notebook: str = ""):
+        from jupyter_client import KernelManager
+        from jupyter_client.kernelspec import KernelSpecManager
+
+        spec_dir = workdir / ".kernels" / "dhlab-sandbox"
+        spec_dir.mkdir(parents=True, exist_ok=True)
+        argv = [sys.executable, str(SANDBOX), "--memory-mb", str(memory_mb),
+                "--cpu-seconds", str(cpu_seconds), "--file-mb", str(file_mb), "--output-mb", str(output_mb),
+                "--", "-f", "{connection_file}"]
+        (spec_dir / "kernel.json").write_text(json.dumps(
+            {"argv": argv, "display_name": "dhlab sandbox", "language": "python"}), encoding="utf-8")
+        self.km = KernelManager(kernel_name="dhlab-sandbox",
+                                kernel_spec_manager=KernelSpecManager(kernel_dirs=[str(spec_dir.parent)]))
+        env = {k: v for k, v in os.environ.items() if not k.startswith(("JPY_", "JUPYTER_"))}
+        env.update(OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1", MKL_NUM_THREADS="1",
+                   MPLBACKEND="agg", PYTHONHASHSEED="0",
+                   IPYTHONDIR=str(workdir / ".ipython"), MPLCONFIGDIR=str(workdir / ".matplotlib"),
+                   DHLAB_GRADE_SUBMISSION=notebook)      # which submission a kernel runs (ps, cleanup)
+        self.km.start_kernel(cwd=str(workdir), env=env)
+        if pid_file is not None:
+            pid = getattr(getattr(self.km, "provisioner", None), "pid", None)
+            if pid:
+                pid_file.write_text(str(pid), encoding="utf-8")
+        self.kc = self.km.client()
+        self.kc.start_channels()
+        self.kc.wait_for_ready(timeout=60)
+
+    def alive(self) -> bool:
+        return bool(self.km.is_alive())
+
+    def execute(self, code: str, limit: float, cap_bytes: int, silent: bool = False) -> _Cell:
+        result = _Cell()
+        try:
+            msg_id = self.kc.execute(code, silent=silent, store_history=not silent, allow_stdin=False,
+                                     stop_on_error=False)
+        except Exception:
+            result.status = "dead"
+            return result
+        end = time.monotonic() + limit
+        while True:
+            left = end - time.monotonic()
+            if left <= 0:
+                return self._stop(msg_id, result, "timeout")
+            status = self._next(msg_id, min(left, 0.5), result)
+            if status == "idle":
+                return result
+            if status == "dead":
+                result.status = "dead"
+                return result
+            if result.output_bytes > cap_bytes or result.capped_in_kernel:
+                # no interrupt: the kernel still holds a backlog of output to send, which would
+                # stall every later cell; the runner starts a new kernel without this cell
+                result.status = result.stopped_for = "output"
+                return result
+
+    def _next(self, msg_id, wait, result):
+        """Read one message of the running cell: 'idle' when it is done, 'dead' when the
+        kernel is gone or its messages are no longer readable, else None."""
+        try:
+            msg = self.kc.get_iopub_msg(timeout=wait)
+        except queue.Empty:
+            return None if self.alive() else "dead"
+        except Exception:                  # e.g. the notebook replaced json inside the kernel
+            return "dead"
+        try:
+            return self._handle(msg, msg_id, result)
+        except Exception:
+            return "dead"
+
+    def _handle(self, msg, msg_id, result):
+        if msg.get("parent_header", {}).get("msg_id") != msg_id:
+            return None
+        kind, content = msg["msg_type"], msg["content"]
+        if kind == "stream":
+            text = content.get("text", "")
+            result.output_bytes += len(text)
+            if OUTPUT_LIMIT_NOTE in text:                  # the kernel's own cap (sandbox.py)
+                result.capped_in_kernel = True
+        elif kind in ("display_data", "execute_result", "update_display_data"):
+            result.output_bytes += sum(len(str(v)) for v in content.get("data", {}).values())
+        elif kind == "error":
+            if result.status == "ok":
+                result.status = "error"
+            result.ename = str(content.get("ename", ""))[:80]
+            result.evalue = str(content.get("evalue", ""))[:200]
+        elif kind == "status" and content.get("execution_state") == "idle":
+            return "idle"
+        return None
+
+    def _stop(self, msg_id, result, why) -> _Cell:
+        """Interrupt the running cell; 'stuck' if the kernel does not come back."""
+        result.status = result.stopped_for = why
+        try:
+            self.km.interrupt_kernel()
+        except Exception:
+            pass
+        end = time.monotonic() + INTERRUPT_GRACE
+        while time.monotonic() < end:
+            status = self._next(msg_id, 0.5, _Cell())
+            if status == "idle":
+                return result
+            if status == "dead":
+                result.status = "dead"
+                return result
+        result.status = "stuck"
+        return result
+
+    def shutdown(self):
+        try:
+            self.kc.stop_channels()
+        except Exception:
+            pass
+        try:
+            self.km.shutdown_kernel(now=True)
+        except Exception:
+            pass
+
+
+_WRITER = r"""
+def encode(value):
+    # JSON by hand: the notebook may have replaced the json module
+    if value is None:
+        return "null"
+    if value is True or value is False:
+        return "true" if value else "false"
+    if type(value) is int:
+        return str(value)
+    if type(value) is float:
+        return repr(value)
+    if type(value) is str:
+        out = []
+        for ch in value:
+            code = ord(ch)
+            out.append(ch if 32 <= code < 127 and ch not in '"\\' else "\\u%04x" % code if code < 0x10000
+                       else "\\u%04x\\u%04x" % (0xD800 + ((code - 0x10000) >> 10), 0xDC00 + ((code - 0x10000) & 0x3FF)))
+        return '"' + "".join(out) + '"'
+    if type(value) is list:
+        return "[" + ",".join(encode(v) for v in value) + "]"
+    if type(value) is dict:
+        return "{" + ",".join(encode(str(k)) + ":" + encode(v) for k, v in value.items()) + "}"
+    return "null"
+
+
+def write(path, names, namespace):
+    out = {}
+    for name in names:
+        if name in namespace:
+            try:
+                out[name] = to_plain(namespace[name])
+            except BaseException as e:
+                out[name] = {"__type__": "unreadable", "repr": (type(e).__name__ + ": " + str(e))[:200]}
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(encode(out))
+"""
+
+
+def _extract_code(path: Path) -> str:
+    """The code the kernel runs to write the answers.
+
+    :func:`to_plain`'s own source and a writer are executed in a fresh namespace with
+    the real builtins, so a notebook that shadowed ``list`` or ``float`` (or changed
+    dhlab) does not change how its answers are read.
+    """
+    source = inspect.getsource(to_plain) + _WRITER
+    return ("__dhlab_g = {'__builtins__': __import__('builtins')}\n"
+            f"__import__('builtins').exec({source!r}, __dhlab_g)\n"
+            f"__dhlab_g['write']({str(path)!r}, {list(ANSWER_NAMES)!r}, globals())\n"
+            "del __dhlab_g\n")
+
+
+# --- one notebook ---------------------------------------------------------------------------
+
+def run_notebook(path, timeout: float = 30, total_timeout: float = 120, memory_mb: float = 2048,
+                 output_mb: float = 10, pid_file=None, progress_file=None, skip=()) -> RunResult:
+    """Run the notebook at ``path`` in a sandboxed kernel and read its answers (see the module doc).
+
+    ``pid_file``: where to write the kernel's process id (so the grader can end it);
+    ``progress_file``: where to write the number of the cell being run (so the grader
+    knows which cell to leave out if this whole process is killed); ``skip``: cells
+    not to run.
+    """
+    started = time.monotonic()
+    result = RunResult()
+    try:
+        cells = read_code_cells(path)
+    except (NotebookError, OSError) as e:
+        result.notebook_error = str(e)
+        return result
+    result.cells = len(cells)
+    result.tampering = scan_for_tampering(cells)
+    cap = int(output_mb * 1e6)
+    deadline = started + total_timeout
+    skip = set(skip)
+    result.skipped = sorted(skip)
+    progress = Path(progress_file) if progress_file else None
+    workdir = Path(tempfile.mkdtemp(prefix="dhlab-grade-"))
+    try:
+        for attempt in range(MAX_ATTEMPTS):
+            kernel = _Kernel(workdir, memory_mb, cpu_seconds=total_timeout + 60, file_mb=64, output_mb=output_mb,
+                             pid_file=Path(pid_file) if pid_file else None, notebook=str(Path(path).resolve()))
+            try:
+                broken = _run_cells(kernel, cells, skip, timeout, deadline, cap, result, attempt == 0, progress)
+                if broken is None:
+                    _extract(kernel, workdir, result)
+                    return result
+            finally:
+                kernel.shutdown()
+            skip.add(broken)
+            result.skipped = sorted(skip)
+            if time.monotonic() > deadline - 2 or attempt == MAX_ATTEMPTS - 1:
+                result.answers_error = "the kernel died or hung, and there was no time left to run the notebook again"
+                return result
+            result.restarts += 1
+        return result
+    except Exception as e:                       # the grader's fault, not the student's
+        result.grader_error = f"{type(e).__name__}: {str(e)[:200]}"
+        return result
+    finally:
+        result.seconds = round(time.monotonic() - started, 2)
+        shutil.rmtree(workdir, ignore_errors=True)
+
+
+def _run_cells(kernel, cells, skip, timeout, deadline, cap, result, record, progress) -> int | None:
+    """Run the cells; the number of a cell that killed or hung the kernel, else None."""
+    for number, source in cells:
+        if number in skip or not source.strip():
+            continue
+        if progress is not None:
+            progress.write_text(str(number), encoding="utf-8")
+        left = deadline - time.monotonic()
+        if left <= 0:
+            result.out_of_time = True
+            return None if kernel.alive() else number
+        cell = kernel.execute(source, min(timeout, left), cap)
+        if cell.status == "error" and record:
+            result.errors.append([number, cell.ename, cell.evalue])
+        if cell.stopped_for == "timeout":
+            if min(timeout, left) < timeout:
+                result.out_of_time = True
+            elif number not in result.timeouts:
+                result.timeouts.append(number)
+        elif cell.stopped_for == "output":
+            if number not in [c for c, _ in result.output_capped]:
+                result.output_capped.append([number, cell.output_bytes])
+            return number
+        if cell.status == "dead":
+            result.kernel_died.append(number)
+            return number
+        elif cell.status == "stuck":
+            result.stuck.append(number)
+            return number
+    return None
+
+
+def _extract(kernel, workdir: Path, result: RunResult) -> None:
+    target = workdir / f"answers-{secrets.token_hex(8)}.json"
+    cell = kernel.execute(_extract_code(target), EXTRACT_SECONDS, 1_000_000, silent=True)
+    if cell.status not in ("ok",):
+        result.answers_error = {"error": f"reading the answers failed in the kernel ({cell.ename}: {cell.evalue})",
+                                "timeout": "reading the answers took too long",
+                                "dead": "the kernel died while the answers were read",
+                                "stuck": "the kernel hung while the answers were read"}.get(
+                                    cell.status, f"reading the answers failed ({cell.status})")
+        return
+    try:
+        size = target.stat().st_size
+    except OSError:
+        result.answers_error = "the kernel did not write the answers"
+        return
+    if size > MAX_JSON_BYTES:
+        result.answers_error = f"the answers are {size} bytes, more than {MAX_JSON_BYTES}"
+        return
+    result.answers_json = target.read_text(encoding="utf-8", errors="replace")
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("notebook")
+    parser.add_argument("result")
+    parser.add_argument("--timeout", type=float, default=30, help="seconds per cell (default 30)")
+    parser.add_argument("--total-timeout", type=float, default=120, help="seconds for the whole notebook")
+    parser.add_argument("--memory-mb", type=float, default=2048, help="the kernel's address-space limit")
+    parser.add_argument("--output-mb", type=float, default=10, help="output a cell may print before it is stopped")
+    parser.add_argument("--pid-file", default=None, help="where to write the kernel's process id")
+    parser.add_argument("--progress-file", default=None, help="where to write the number of the cell being run")
+    parser.add_argument("--skip", type=int, action="append", default=[], help="a cell not to run (repeatable)")
+    args = parser.parse_args(argv)
+    apply_limits(memory_mb=max(4096, 2 * args.memory_mb), cpu_seconds=None, file_mb=None)
+    result = run_notebook(args.notebook, args.timeout, args.total_timeout, args.memory_mb, args.output_mb,
+                          args.pid_file, args.progress_file, args.skip)
+    out = Path(args.result)
+    tmp = out.with_name(out.name + ".tmp")
+    tmp.write_text(json.dumps(asdict(result)), encoding="utf-8")
+    os.replace(tmp, out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,434 @@
+"""The PUMA assignment's fair checks, its answers as plain data, and the student notebook.
+
+Fast tests, no kernels: the checks are run on namespaces built here, as the notebook's
+check cells and the grader build them (same plain-data path). The grader's runs of
+whole notebooks are in test_grading_runner.py.
+"""
+import doctest
+import importlib
+import json
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import dhlab
+from dhlab import assignment as A
+from dhlab.grading import answers as ans
+from dhlab.grading import checks, generate, gradebook, puma
+from dhlab.validation import DHLabError
+
+ROOT = Path(__file__).resolve().parents[1]
+SOURCE = ROOT / "notebooks" / "source" / "08_puma_assignment.ipynb"
+STUDENT = ROOT / "notebooks" / "08_puma_assignment.ipynb"
+q1, q2, q3, q4, q5, q6 = A.joint_variables(6)
+QS = (q1, q2, q3, q4, q5, q6)
+
+
+@pytest.mark.parametrize("name", ["puma", "answers", "checks", "gradebook", "generate", "runner", "sandbox"])
+def test_docstring_examples_of_the_grading_modules(name):
+    module = importlib.import_module(f"dhlab.grading.{name}")
+    result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE)
+    assert result.failed == 0
+
+
+# --- helpers: answers as a student's notebook would hold them ---------------------------------
+
+def _solution_namespace():
+    """The source notebook's setup cell and solution code, run here (our own code)."""
+    nb = json.loads(SOURCE.read_text(encoding="utf-8"))
+    ns = {}
+    for cell in nb["cells"]:
+        meta = cell["metadata"].get("nbgrader", {})
+        source = "".join(cell["source"])
+        if meta.get("grade_id") == "setup" or meta.get("solution"):
+            exec(compile(source, meta["grade_id"], "exec"), ns)
+    return ns
+
+
+def _namespace_from_frames(frames):
+    """A valid answer built from any valid set of DH frames (home pose)."""
+    ns = _solution_namespace()
+    ref = puma.reference()
+    rows = puma.dh_rows_from_frames(frames)
+    for i, (sign, theta, d, a, alpha) in enumerate(rows, start=1):
+        ns[f"T{i}"] = A.Tz(sign * QS[i - 1] + theta, d) @ A.Tx(alpha, a)
+    ns["chain"] = _chain(ns)
+    ns["link_points"] = {k: ((ref.world_points(k) - F[:3, 3]) @ F[:3, :3]).tolist() for k, F in enumerate(frames)}
+    return ns
+
+
+def _chain(ns):
+    return ns["T1"] @ ns["T2"] @ ns["T3"] @ ns["T4"] @ ns["T5"] @ ns["T6"]
+
+
+def _report(ns):
+    return checks.check_all(ans.answers_from_namespace(ns))
+
+
+def _scores(report):
+    return [p.score for p in report.parts]
+
+
+def _wrong(part):
+    return [item for item in part.items if item.ok is False]
+
+
+# --- full marks: the solution and every other valid DH assignment ------------------------------
+
+def test_the_source_notebooks_solution_scores_full_marks():
+    report = _report(_solution_namespace())
+    assert report.score == report.max_score == sum(checks.POINTS.values())
+    assert "all 6 joint axes" in report.part("part3").text()
+
+
+def test_random_valid_dh_assignments_score_full_marks():
+    """Signs of every z and x, origins slid along parallel axes, x6 turned: all valid."""
+    rng = np.random.default_rng(2024)
+    for _ in range(60):
+        report = _report(_namespace_from_frames(puma.random_valid_frames(rng)))
+        assert report.score == report.max_score, report.text()
+
+
+def test_the_hand_written_alternative_scores_full_marks():
+    ns = _solution_namespace()
+    ns["T1"] = A.Tz(q1, 0) @ A.Tx(-90, 0)
+    ns["T2"] = A.Tz(-q2, -0.15005) @ A.Tx(0, 0.4318)
+    ns["T3"] = A.Tz(-q3, 0) @ A.Tx(90, 0.0203)
+    ns["T4"] = A.Tz(q4 + 180, 0.4318) @ A.Tx(90, 0)
+    ns["T5"] = A.Tz(-q5 + 180, 0) @ A.Tx(90, 0)
+    ns["T6"] = A.Tz(q6 + 90, 0) @ A.Tx(0, 0)
+    ns["chain"] = _chain(ns)
+    frames = ns["chain"].frames(np.zeros(6))
+    ref = puma.reference()
+    ns["link_points"] = [np.round((ref.world_points(k) - F[:3, 3]) @ F[:3, :3], 4).tolist()
+                         for k, F in enumerate(frames)]          # typed with 4 decimals
+    assert _report(ns).score == 10
+
+
+def test_a_valid_chain_matches_the_puma_at_random_configurations():
+    rng = np.random.default_rng(7)
+    rows = ans.answers_from_namespace(_namespace_from_frames(puma.random_valid_frames(rng)))
+    match = checks.chain_matches(checks._rows(rows))
+    assert all(match["axes"]) and match["end_effector"] and match["configurations"] == 51
+
+
+# --- one mistake costs its own item and names the quantity -------------------------------------
+
+def test_the_issues_example_feedback():
+    ns = _solution_namespace()
+    ns["T2"] = A.Tz(q2, 0) @ A.Tx(-90, 0.4318)
+    ns["chain"] = _chain(ns)
+    report = _report(ns)
+    wrong = _wrong(report.part("part3"))
+    assert [w.label.split(" ")[0] for w in wrong] == ["T2"]
+    assert "joint 3: z2 should be parallel to z1" in wrong[0].message
+    assert "your α2 = -90° turns it" in wrong[0].message
+    assert _scores(report)[:2] == [2, 3]                     # parts 1 and 2 keep their marks
+    assert report.score == pytest.approx(10 - 5 / 7, abs=0.01)
+
+
+@pytest.mark.parametrize("i", range(1, 7))
+def test_a_wrong_twist_costs_only_its_own_transformation(i):
+    ns = _solution_namespace()
+    row = ans.answers_from_namespace(ns).T[i - 1]
+    ns[f"T{i}"] = A.Tz(QS[i - 1] + row.theta.const, row.d.const) @ A.Tx(row.alpha + 45, row.a)
+    ns["chain"] = _chain(ns)
+    report = _report(ns)
+    wrong = _wrong(report.part("part3"))
+    assert [w.label.split(" ")[0] for w in wrong] == [f"T{i}"]
+    assert f"α{i}" in wrong[0].message
+    assert _scores(report)[:2] == [2, 3]
+    match = checks.chain_matches(checks._rows(ans.answers_from_namespace(ns)))
+    if i < 6:        # α6 only turns frame 6 about x6: no joint axis, and not the end effector's position
+        assert not (all(match["axes"]) and match["end_effector"])     # the chain really is wrong
+
+
+@pytest.mark.parametrize("change, words", [
+    (("T3", lambda: A.Tz(q3, 0.15005) @ A.Tx(-90, 0)), ["z3 should be 0.0203 m from z2", "a3 = 0"]),
+    (("T3", lambda: A.Tz(q3, 0.15005) @ A.Tx(-90, -0.0203)), ["wrong side", "sign of a3"]),
+    (("T4", lambda: A.Tz(q4, 0.3) @ A.Tx(90, 0)), ["check d4", "0.1318 m short"]),
+    (("T4", lambda: A.Tz(-q4, 0.4318) @ A.Tx(90, 0)), ["joint 4: a positive q4 turns the arm the wrong way"]),
+    (("T1", lambda: A.Tz(q1 + 90, 0) @ A.Tx(90, 0)), ["points the wrong way", "constant in θ1"]),
+    (("T5", lambda: A.Tz(q5, 0) @ A.Tx(-1.5708, 0)), ["looks like radians"]),
+    (("T6", lambda: A.Tz(q6, 0.056) @ A.Tx(0, 0)), ["end effector", "wrist centre W", "d6 = 0.056"]),
+    (("T3", lambda: A.Tz(q2, 0.15005) @ A.Tx(-90, 0.0203)), ["θ3 uses q2"]),
+    (("T2", lambda: A.Tz(0, 0) @ A.Tx(0, 0.4318)), ["θ2 has no joint variable"]),
+    (("T2", lambda: A.Tz(90, q2) @ A.Tx(0, 0.4318)), ["slide (prismatic)"]),
+])
+def test_feedback_names_the_joint_and_the_quantity(change, words):
+    name, make = change
+    ns = _solution_namespace()
+    ns[name] = make()
+    ns["chain"] = _chain(ns)
+    report = _report(ns)
+    wrong = _wrong(report.part("part3"))
+    assert len(wrong) == 1 and wrong[0].label.startswith(name)
+    for w in words:
+        assert w in wrong[0].message, wrong[0].message
+    assert _scores(report)[:2] == [2, 3]
+
+
+def test_the_chain_is_its_own_item():
+    ns = _solution_namespace()
+    ns["chain"] = ns["T2"] @ ns["T1"] @ ns["T3"] @ ns["T4"] @ ns["T5"] @ ns["T6"]
+    part = _report(ns).part("part3")
+    assert [w.label for w in _wrong(part)] == ["chain"]
+    assert "factor 1 is your T2" in _wrong(part)[0].message
+    ns["chain"] = ...
+    part = _report(ns).part("part3")
+    assert part.items[-1].ok is None and "not answered" in part.items[-1].message
+    ns = _solution_namespace()
+    del ns["T4"]                                    # the chain's factor stands for a missing T4
+    assert _report(ns).score == 10
+
+
+def test_part1_mistakes_and_the_ways_students_write_answers():
+    ns = _solution_namespace()
+    ns.update(n_links=6, joint_types="RRRRR", x_cases=["intersect", "parallel", "intersect", "intersect", "intersect"])
+    part = _report(ns).part("part1")
+    messages = {w.label: w.message for w in _wrong(part)}
+    assert set(messages) == {"n_links", "joint_types", "x3"}
+    assert "n + 1 links" in messages["n_links"]
+    assert "skew" in messages["x3"] and "0.0203 m" in messages["x3"]
+    ns.update(n_links=7.0, joint_types=["revolute"] * 6,
+              x_cases={1: "case 1", 2: "Paralelos", 3: "ni paralelos ni se intersecan", 4: 1, 5: "intersecting"})
+    assert _report(ns).part("part1").full_marks
+
+
+def test_part2_mistakes_cost_only_those_links():
+    ns = _solution_namespace()
+    ref = puma.reference()
+    lp = ns["link_points"]
+    F2 = ref.home_frames[2]
+    lp[3] = ((ref.world_points(3) - F2[:3, 3]) @ F2[:3, :3]).tolist()        # drawn in frame 2
+    lp[4] = [(x, y, z) for (y, x, z) in lp[4]]                              # x and y swapped
+    lp[6] = lp[6][:3]                                                        # a point missing
+    report = _report(ns)
+    wrong = {w.label.split(" ")[1]: w.message for w in _wrong(report.part("part2"))}
+    assert set(wrong) == {"3", "4", "6"}
+    assert "axis of joint 4 must be the z axis" in wrong["3"]
+    assert "x4 must lie along the common normal" in wrong["4"]
+    assert "give the 4 points G1, G2, G3, G4" in wrong["6"]
+    assert _scores(report)[0] == 2 and _scores(report)[2] == 5
+    assert report.part("part2").score == pytest.approx(3 * 4 / 7, abs=0.01)
+
+
+def test_part2_must_fit_the_frames_the_chain_builds_when_the_chain_is_right():
+    rng = np.random.default_rng(3)
+    ns = _namespace_from_frames(puma.random_valid_frames(rng))
+    ns["link_points"] = _solution_namespace()["link_points"]        # valid, but other frames
+    report = _report(ns)
+    assert report.part("part3").full_marks
+    wrong = _wrong(report.part("part2"))
+    assert wrong and all("not in the frame" in w.message for w in wrong)
+    ns["T5"] = A.Tz(q5, 0) @ A.Tx(0, 0)                              # now the chain has a mistake:
+    ns["chain"] = _chain(ns)
+    report = _report(ns)                                             # part 2 is judged alone
+    assert report.part("part2").full_marks
+    assert "checked against the DH rules alone" in report.part("part2").text()
+
+
+def test_nothing_answered_gives_zero_with_not_answered():
+    ns = {"n_links": ..., "link_points": {k: ... for k in range(7)}, "T1": ..., "chain": ...}
+    report = _report(ns)
+    assert report.score == 0
+    assert all(not p.answered and "not answered" in p.text() for p in report.parts)
+
+
+# --- answers as plain data ------------------------------------------------------------------------
+
+def test_to_plain_caps_sizes_and_survives_odd_values():
+    cyclic = []
+    cyclic.append(cyclic)
+    plain = ans.to_plain({"big": list(range(10_000)), "cyclic": cyclic, "arr": np.arange(3.0),
+                          "nan": float("nan"), "dots": ..., 3: "int key"})
+    json.dumps(plain)                                          # JSON, whatever came in
+    text = json.dumps(plain)
+    assert "too big" in text and "nan" in text
+
+
+def test_answers_from_dhlab_objects_read_fields_not_methods(monkeypatch):
+    T = A.Tz(q3 - 90, 0.15) @ A.Tx(-90, 0.02)
+    monkeypatch.setattr(A.DHTransform, "__repr__", lambda self: "perfect")
+    row = ans.parse_answers(json.loads(json.dumps({"T3": ans.to_plain(T)}))).T[2]
+    assert (row.theta.joint, row.theta.sign, row.theta.const, row.d.const, row.alpha, row.a) == (3, 1, -90, 0.15, -90, 0.02)
+
+
+def test_parse_json_refuses_big_or_broken_text():
+    with pytest.raises(ValueError, match="not valid JSON"):
+        ans.parse_json('{"n_links": ')
+    with pytest.raises(ValueError, match="more than"):
+        ans.parse_json(" " * (ans.MAX_JSON_BYTES + 1))
+    with pytest.raises(ValueError, match="not a JSON object"):
+        ans.parse_json("[1, 2]")
+
+
+def test_unreadable_answers_say_why():
+    a = ans.parse_answers({"n_links": "seven", "joint_types": 6, "T1": [[1, 0], [0, 1]],
+                           "x_cases": {"first": "skew"}, "link_points": [[(0, 0)]]})
+    assert "must be a number" in a.n_links.why
+    assert "one letter per joint" in a.joint_types.why
+    assert "Tz(θ, d) @ Tx(α, a)" in a.T[0].why
+    assert "keys of x_cases" in a.x_cases.why
+    assert "must be a point" in a.link_points[0].why
+
+
+# --- the student's tools ----------------------------------------------------------------------------
+
+def test_only_the_seeds_form_of_transformation_is_allowed():
+    with pytest.raises(DHLabError, match="Tz first"):
+        A.Tx(90, 0) @ A.Tz(q1, 0)
+    with pytest.raises(DHLabError, match="constants"):
+        A.Tx(q1, 0)
+    with pytest.raises(DHLabError, match="one joint variable"):
+        A.Tz(q1 + q2, 0)
+    with pytest.raises(DHLabError, match="cannot be multiplied"):
+        A.Tz(2 * q1, 0)
+    with pytest.raises(DHLabError, match="length"):
+        A.Tz(q1, dhlab.deg(90))
+    T = A.Tz(q2 + dhlab.deg(90), 0) @ A.Tx(dhlab.deg(-90), 0.1)      # deg() values are read as degrees
+    assert repr(T) == "Tz[q2 + 90, 0]·Tx[-90°, 0.1]"
+    sym = T.matrix()
+    assert sym.free_symbols and str(sym[2, 3]) == "0"
+
+
+def test_the_check_functions_and_the_figures_in_a_notebook_namespace():
+    ns = _solution_namespace()
+    feedback = A.check_part3(ns)
+    assert feedback.score == checks.POINTS["part3"] and feedback.full_marks
+    assert "part 2 checked again" in feedback.text()
+    assert "<b>" in feedback._repr_html_()
+    assert A.check_part(2, {"link_points": ns["link_points"]}).full_marks
+    with pytest.raises(DHLabError):
+        A.check_part(4, ns)
+    assert isinstance(A.my_robot_figure({}), A.Note)                 # before part 3 is answered
+    assert isinstance(A.teach({}), A.Note)
+    panel = A.teach(ns)
+    panel.sliders[2].value = 30
+    assert panel.q[2] == pytest.approx(math.radians(30))
+    assert A.my_robot_figure(ns).axes
+    assert "joint 6" in repr(A.axes_table()) and "G4" in repr(A.points_table())
+
+
+# --- the notebooks: source, student version, points ------------------------------------------------
+
+def test_the_student_notebook_is_up_to_date_with_the_source():
+    assert generate.generate(SOURCE, STUDENT, check=True), "run: python -m dhlab.grading.generate"
+
+
+def test_the_student_notebook_has_stubs_and_no_solutions():
+    student = json.loads(STUDENT.read_text(encoding="utf-8"))
+    text = json.dumps(student)
+    for secret in ("BEGIN SOLUTION", "HIDDEN TESTS", "0.4318)", "feedback_1.score", "\"RRRRRR\""):
+        assert secret not in text
+    answers_cells = [c for c in student["cells"] if c["metadata"].get("nbgrader", {}).get("solution")]
+    assert len(answers_cells) == 3
+    assert all("# YOUR CODE HERE" in "".join(c["source"]) for c in answers_cells)
+    assert all(c.get("outputs") == [] for c in student["cells"] if c["cell_type"] == "code")
+
+
+def test_points_in_the_notebook_are_the_checks_points():
+    nb = json.loads(SOURCE.read_text(encoding="utf-8"))
+    grade = {c["metadata"]["nbgrader"]["grade_id"]: c["metadata"]["nbgrader"]["points"]
+             for c in nb["cells"] if c["metadata"].get("nbgrader", {}).get("grade")}
+    assert grade == {f"{key}_check": points for key, points in checks.POINTS.items()}
+    text = "".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "markdown")
+    for n, points in enumerate(checks.POINTS.values(), start=1):
+        assert re.search(rf"## Part {n} · .*\({points} points\)", text)
+        assert re.search(rf"\| {n}\. .*\| {points} \|", text)
+
+
+def test_the_generator_follows_nbgraders_rules():
+    def cell(source, **meta):
+        base = {"grade": False, "solution": False, "locked": False, "schema_version": 3}
+        base.update(meta)
+        return {"cell_type": "code", "source": source, "outputs": [], "execution_count": 3,
+                "metadata": {"nbgrader": base}}
+
+    out = generate.student_cell(cell("def f():\n    ### BEGIN SOLUTION\n    return 1\n    ### END SOLUTION",
+                                     solution=True, grade_id="f"))
+    assert out["source"] == "def f():\n    # YOUR CODE HERE" and out["metadata"]["deletable"] is False
+    assert "editable" not in out["metadata"] and out["execution_count"] is None
+    out = generate.student_cell(cell("x = 1", solution=True, grade_id="g"))
+    assert out["source"] == "# YOUR CODE HERE"
+    md = dict(cell("an answer", solution=True, grade=True, points=1, grade_id="m"), cell_type="markdown")
+    assert generate.student_cell(md)["source"] == "YOUR ANSWER HERE"
+    out = generate.student_cell(cell("a\n### BEGIN HIDDEN TESTS\nassert x\n### END HIDDEN TESTS\nb",
+                                     grade=True, locked=True, points=1, grade_id="t"))
+    assert out["source"] == "a\nb" and out["metadata"]["editable"] is False
+    with pytest.raises(generate.GenerateError, match="not a solution cell"):
+        generate.student_cell({"cell_type": "code", "source": "### BEGIN SOLUTION\n### END SOLUTION",
+                               "metadata": {}, "outputs": []})
+    with pytest.raises(generate.GenerateError, match="not a grade cell"):
+        generate.student_cell(cell("### BEGIN HIDDEN TESTS\n### END HIDDEN TESTS", locked=True, grade_id="h"))
+    with pytest.raises(generate.GenerateError, match="without END"):
+        generate.student_cell(cell("### BEGIN SOLUTION\nx = 1", solution=True, grade_id="i"))
+    with pytest.raises(generate.GenerateError, match="used twice"):
+        generate.check_metadata([cell("", locked=True, grade_id="a"), cell("", locked=True, grade_id="a")])
+    with pytest.raises(generate.GenerateError, match="needs points"):
+        generate.check_metadata([cell("", grade=True, grade_id="b")])
+    with pytest.raises(generate.GenerateError, match="unknown keys"):
+        generate.check_metadata([cell("", grade_id="c", weight=2)])
+
+
+def test_generate_check_reports_an_outdated_student_notebook(tmp_path):
+    student = tmp_path / "student.ipynb"
+    assert generate.main([str(SOURCE), "-o", str(student)]) == 0
+    assert generate.main([str(SOURCE), "-o", str(student), "--check"]) == 0
+    student.write_text(student.read_text().replace("# YOUR CODE HERE", "# mine"))
+    assert generate.main([str(SOURCE), "-o", str(student), "--check"]) == 1
+
+
+# --- the gradebook's files ----------------------------------------------------------------------
+
+def test_gradebook_writes_are_atomic(tmp_path, monkeypatch):
+    path = tmp_path / "gradebook.csv"
+    gradebook.write_csv(path, [{"submission": "b", "score": "1"}, {"submission": "a", "score": "2"}])
+    text = path.read_text()
+    assert text.splitlines()[0].split(",")[:4] == ["submission", "score", "max_score", "status"]
+    assert [line.split(",")[0] for line in text.splitlines()[1:]] == ["a", "b"]
+
+    def broken_replace(src, dst):
+        raise OSError("disk full")
+
+    monkeypatch.setattr(gradebook.os, "replace", broken_replace)
+    with pytest.raises(OSError):
+        gradebook.write_csv(path, [{"submission": "c", "score": "3"}])
+    assert path.read_text() == text                                   # the old gradebook, whole
+    assert [p.name for p in tmp_path.iterdir()] == ["gradebook.csv"]  # no temporary file left
+
+
+def test_feedback_file_names_are_safe():
+    assert gradebook.feedback_filename("alice/ps1/puma") == "alice__ps1__puma.txt"
+    assert "/" not in gradebook.feedback_filename("../../etc/passwd")
+    assert gradebook.feedback_filename("..").endswith(".txt")
+
+
+def test_answers_written_the_ways_students_write_them():
+    ns = _solution_namespace()
+    ns["T2"] = A.Tz("q2", 0) * A.Tx(0, 0.4318)                # text θ and the seed's * for the product
+    ns["T3"] = A.Tz("q3", 0.15005) * A.Tx(-90, 0.0203)
+    ns["chain"] = ns["T1"] * ns["T2"] * ns["T3"] * ns["T4"] * ns["T5"] * ns["T6"]
+    ns["n_links"], ns["joint_types"] = "7", "R R R R R R"
+    ns["x_cases"] = "intersect, parallel, skew, intersect, intersect"
+    ns["link_points"] = [np.array(p) for p in ns["link_points"].values()]
+    assert _report(ns).score == 10
+    with pytest.raises(DHLabError, match="±q_i"):
+        A.Tz("2*q1", 0)
+
+
+def test_the_runner_reads_notebook_formats_3_and_4(tmp_path):
+    from dhlab.grading import runner
+    v3 = {"nbformat": 3, "worksheets": [{"cells": [{"cell_type": "code", "input": "n_links = 7"},
+                                                   {"cell_type": "markdown", "source": "hi"}]}]}
+    (tmp_path / "v3.ipynb").write_text(json.dumps(v3))
+    assert runner.read_code_cells(tmp_path / "v3.ipynb") == [(1, "n_links = 7")]
+    (tmp_path / "v4.ipynb").write_text(json.dumps({"cells": [{"cell_type": "markdown", "source": "x"},
+                                                             {"cell_type": "code", "source": ["a = 1\n", "b = 2"]}]}))
+    assert runner.read_code_cells(tmp_path / "v4.ipynb") == [(2, "a = 1\nb = 2")]
+    (tmp_path / "bad.ipynb").write_bytes(b"\xff\xfe not text")
+    with pytest.raises(runner.NotebookError, match="UTF-8"):
+        runner.read_code_cells(tmp_path / "bad.ipynb")
