@@ -30,7 +30,7 @@ $(READY):
 	touch $@
 
 lab: $(READY)
-	$(BIN)/jupyter lab --ServerApp.root_dir=notebooks
+	$(BIN)/jupyter lab --ServerApp.root_dir=notebooks $(if $(filter 0,$(shell id -u)),--allow-root)
 
 test: $(READY)
 	$(BIN)/python -m pytest $(XDIST)
