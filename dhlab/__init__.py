@@ -7,7 +7,7 @@ Angles are radians in the API (``deg(30)`` converts), lengths in the robot's uni
 >>> puma.fk(puma.qz).round(5)[:3, 3].tolist()
 [0.4521, -0.15005, 0.4318]
 """
-from . import assign, ik, robots, symbolic, transforms
+from . import assign, ik, lines, robots, symbolic, transforms
 from .assign import DHAssignment, dh_assignment, dh_from_axes, joint_axes
 from .chain import Link, Move, Robot, Rot
 from .dh import DHRobot, PrismaticDH, RevoluteDH
@@ -21,7 +21,7 @@ __all__ = [
     "DHRobot", "RevoluteDH", "PrismaticDH", "Robot", "Link", "Rot", "Move", "DHTable",
     "Rx", "Ry", "Rz", "Tr", "trans", "Tx", "Tz", "dh_matrix", "inv", "is_rigid", "check_rigid", "rpy",
     "deg", "rad", "compact", "legend", "DHLabError", "robots", "ik", "symbolic", "transforms",
-    "dh_from_axes", "dh_assignment", "joint_axes", "DHAssignment", "assign",
+    "dh_from_axes", "dh_assignment", "joint_axes", "DHAssignment", "assign", "lines",
 ]
 __version__ = "0.1.0"
 

@@ -59,6 +59,7 @@ import numpy as np
 
 from .dh import DHRobot, PrismaticDH, RevoluteDH
 from .kinematics import elementary
+from .lines import Line, relation
 from .symbolic import exact_angle
 from .table import format_angle, format_length
 from .transforms import inv
@@ -433,7 +434,7 @@ class _Placer:
 
     def __init__(self, lines, tool_pose, tool_point, rel, tol, sign_rule, case1, parallel, prismatic):
         self.given = lines
-        self.lines = [None] * len(lines)          # the axis lines actually used: (point, direction)
+        self.lines = [None] * len(lines)          # the axis lines actually used (dhlab.lines.Line)
         self.tool_pose, self.tool_point = tool_pose, tool_point
         self.rel, self.tol, self.scale = rel, tol, tol / rel
         self.sign_rule, self.case1 = sign_rule, case1
@@ -462,7 +463,7 @@ class _Placer:
         p, u, kind = self.given[j]
         if kind == "P" and self.prismatic == "through_origin":
             p = previous_origin
-        self.lines[j] = (p, u)
+        self.lines[j] = Line(p, u)
 
     def _prismatic_note(self, j) -> str:
         where = ("the previous origin" if j else "the world origin") + " (prismatic='through_origin')"
@@ -473,8 +474,8 @@ class _Placer:
 
     # --- rule 5 -------------------------------------------------------------------
     def _frame0(self):
-        p, z = self.lines[0]
-        origin = p - (p @ z) * z                      # the point of z0 nearest the world origin
+        z = self.lines[0].direction
+        origin = self.lines[0].nearest_point(np.zeros(3))
         world_x = np.array([1.0, 0.0, 0.0])
         x = world_x - (world_x @ z) * z
         x_choice = "the world x axis, made perpendicular to z0"
@@ -491,22 +492,23 @@ class _Placer:
     # --- rules 6–8 --------------------------------------------------------------------
     def _frame(self, i, F_prev):
         """Frame i from z_{i−1} (joint i's line) and z_i (joint i+1's line)."""
-        (pa, ua), (pb, ub) = self.lines[i - 1], self.lines[i]
+        a, b = self.lines[i - 1], self.lines[i]
         O_prev, x_prev = F_prev[:3, 3], F_prev[:3, 0]
-        relation, dist, angle = _relation(pa, ua, pb, ub, self.tol, self.rel)
+        rel = relation(a, b, tol=self.tol, angle_tol=self.rel)
+        kind = "intersecting" if rel.kind == "intersect" else rel.kind     # the report's word
+        dist, angle = rel.distance, math.radians(rel.acute)                # lines have no sense here
         za, zb = f"z{i - 1}", f"z{i}"
         notes = []
-        if relation in ("intersecting", "skew"):
-            ca, cb = _closest_points(pa, ua, pb, ub)
-            origin = cb
-            if relation == "intersecting":
+        if kind in ("intersecting", "skew"):
+            origin = rel.foot                         # the point of z_i nearest z_{i-1}
+            if kind == "intersecting":
                 case = 1
-                x, x_choice = self._case1_x(i, ua, ub, x_prev)
+                x, x_choice = self._case1_x(i, rel.normal, x_prev)
                 why = f"{za} and {zb} intersect (at {_deg(angle)}): x{i} is perpendicular to both"
                 origin_choice = "the intersection (rule 6)"
             else:
                 case = 3
-                x = _unit(cb - ca)
+                x = rel.normal                        # from z_{i-1} towards z_i
                 why = (f"{za} and {zb} are skew ({_deg(angle)} apart, distance {_num(dist)}): "
                        "they have one common normal")
                 origin_choice = f"where the common normal meets {zb} (rule 6)"
@@ -518,12 +520,11 @@ class _Placer:
                              "if they should be parallel, pass a larger tol")
         else:
             case = 2
-            origin, origin_choice = self._parallel_origin(i, pb, ub, O_prev)
-            antiparallel = ua @ ub < 0
+            origin, origin_choice = self._parallel_origin(i, b, O_prev)
+            antiparallel = rel.angle > 90
             sense = " (opposite directions, so α = 180°)" if antiparallel else ""
-            if relation == "parallel":
-                foot = pa + ((origin - pa) @ ua) * ua
-                x = _unit(origin - foot)
+            if kind == "parallel":
+                x = _unit(origin - a.nearest_point(origin))
                 why = (f"{za} ∥ {zb}{sense}, {_num(dist)} apart: "
                        "infinitely many common normals, one is chosen")
                 x_choice = f"along that common normal, from {za} towards {zb} (a{i} > 0)"
@@ -532,11 +533,11 @@ class _Placer:
                 why = (f"{za} and {zb} are the same line{sense}: a{i} = 0, "
                        f"and x{i} and O{i} are free")
                 x_choice = f"x{i} = x{i - 1} (no turn about {za}: θ{i} offset 0)"
-        step = FrameStep(i, "6-8", case, relation, why, origin_choice, x_choice, origin, x, ub, notes=notes)
-        return _frame(origin, x, ub), step
+        step = FrameStep(i, "6-8", case, kind, why, origin_choice, x_choice, origin, x, b.direction, notes=notes)
+        return _frame(origin, x, b.direction), step
 
-    def _case1_x(self, i, ua, ub, x_prev):
-        cross = _unit(_cross(ua, ub))
+    def _case1_x(self, i, cross, x_prev):
+        """x_i for intersecting axes, from the unit ``cross`` = z_{i−1} × z_i / |…|."""
         if self.sign_rule > 0:
             return cross, f"x{i} = z{i - 1} × z{i} (case1='z_prev x z': 0° < α{i} < 180°)"
         if self.sign_rule < 0:
@@ -545,27 +546,25 @@ class _Placer:
             return -cross, f"x{i} = z{i} × z{i - 1}, the sign nearest x{i - 1} (case1='nearest')"
         return cross, f"x{i} = z{i - 1} × z{i}, the sign nearest x{i - 1} (case1='nearest')"
 
-    def _parallel_origin(self, i, pb, ub, O_prev):
+    def _parallel_origin(self, i, b, O_prev):
         if self.parallel == "at_joint":
-            p = self.given[i][0]
-            origin = pb + ((p - pb) @ ub) * ub
+            origin = b.nearest_point(self.given[i][0])
             return origin, f"joint {i + 1}'s given point (parallel='at_joint', seed rule 6)"
-        origin = pb + ((O_prev - pb) @ ub) * ub
+        origin = b.nearest_point(O_prev)
         return origin, f"the foot of the normal from O{i - 1} (parallel='zero_d': d{i} = 0)"
 
     # --- rule 9 ---------------------------------------------------------------------------
     def _frame_n(self, n, F_prev):
-        p, z = self.lines[n - 1]
-        point = self.tool_point
-        foot = p + ((point - p) @ z) * z
-        dist = float(np.linalg.norm(point - foot))
+        line, point = self.lines[n - 1], self.tool_point
+        z, foot = line.direction, line.nearest_point(point)
+        dist = line.distance_to_point(point)
         za = f"z{n - 1}"
         if dist > self.tol:
-            relation, origin, x = "parallel", point, _unit(point - foot)
+            kind, origin, x = "parallel", point, _unit(point - foot)
             why = f"z{n} along {za} (rule 9), through the end effector, {_num(dist)} from {za}"
             x_choice = f"from {za} towards the end effector (a{n} > 0)"
         else:
-            relation, origin = "coincident", foot
+            kind, origin = "coincident", foot
             why = f"z{n} along {za} (rule 9); the end effector is on {za}, so x{n} is free"
             x, x_choice = F_prev[:3, 0], f"x{n} = x{n - 1} (θ{n} offset 0)"
             if self.tool_pose is not None:
@@ -573,35 +572,8 @@ class _Placer:
                 if np.linalg.norm(xt) > 1e-6:
                     x, x_choice = _unit(xt), f"the tool's x axis (made perpendicular to z{n})"
         origin_choice = "the end effector's point (rule 9)"
-        step = FrameStep(n, "9", None, relation, why, origin_choice, x_choice, origin, x, z)
+        step = FrameStep(n, "9", None, kind, why, origin_choice, x_choice, origin, x, z)
         return _frame(origin, x, z), step
-
-
-def _relation(pa, ua, pb, ub, tol, angle_tol):
-    """How line b sits with respect to line a: (relation, distance, angle in radians)."""
-    cross = _cross(ua, ub)
-    sin = float(np.linalg.norm(cross))
-    angle = math.atan2(sin, abs(float(ua @ ub)))        # 0 … 90°: lines have no sense here
-    w = pb - pa
-    if sin < angle_tol:
-        dist = float(np.linalg.norm(w - (w @ ua) * ua))
-        return ("coincident" if dist <= tol else "parallel"), dist, angle
-    dist = abs(float(w @ cross)) / sin
-    return ("intersecting" if dist <= tol else "skew"), dist, angle
-
-
-def _closest_points(pa, ua, pb, ub):
-    """The points of lines a and b nearest each other (the lines are not parallel).
-
-    With c = ua × ub: s = ((pb − pa) × ub)·c / |c|², t = ((pb − pa) × ua)·c / |c|²,
-    which stays accurate for nearly parallel lines (unlike the 1 − (ua·ub)² form).
-    """
-    c = _cross(ua, ub)
-    cc = c @ c
-    w = pb - pa
-    s = (_cross(w, ub) @ c) / cc
-    t = (_cross(w, ua) @ c) / cc
-    return pa + s * ua, pb + t * ub
 
 
 def _frame(origin, x, z) -> np.ndarray:
@@ -681,10 +653,9 @@ def _check(robot, lines, tool_pose, tool_point, scale):
     the end effector's deviation from the given pose or point)."""
     F = robot.frames(robot.qz)
     worst = 0.0
-    for i, (p, u) in enumerate(lines):
+    for i, line in enumerate(lines):
         o, z = F[i][:3, 3], F[i][:3, 2]
-        w = o - p
-        worst = max(worst, float(np.linalg.norm(w - (w @ u) * u)), float(np.linalg.norm(z - u)) * scale)
+        worst = max(worst, line.distance_to_point(o), float(np.linalg.norm(z - line.direction)) * scale)
     end = robot.fk(robot.qz)
     tool_dev = float(np.abs(end - tool_pose).max()) if tool_pose is not None \
         else float(np.linalg.norm(end[:3, 3] - tool_point))

@@ -27,6 +27,7 @@ import sympy as sp
 from . import robots
 from .dh import DHRobot
 from .exercises import NOT_ANSWERED, Exercise, Feedback, check_matrix, check_value
+from .lines import Line, closest_points, relation
 from .transforms import Rx, Rz, dh_matrix, trans
 from .validation import DHLabError
 
@@ -93,12 +94,13 @@ def _read_numbers(answer, count: int, what: str):
     return values, ""
 
 
-# --- lines in space ------------------------------------------------------------------------
+# --- lines in space (the geometry is dhlab.lines) ----------------------------------------------
 @dataclass(frozen=True)
 class Relation:
     """How two lines lie: ``kind`` is 'intersect', 'parallel', 'skew' or 'coincident';
     ``distance`` is the length of their common normal, ``angle`` the angle between
-    their directions in degrees (0…180: 180 means parallel but opposite)."""
+    their directions in degrees (0…180: 180 means parallel but opposite).
+    :func:`dhlab.lines.relation`'s result, rounded for messages."""
     kind: str
     distance: float
     angle: float
@@ -109,33 +111,20 @@ class Relation:
 
 
 def axis_relation(p1, u1, p2, u2, tol: float = 1e-9) -> Relation:
-    """The relation of line 1 (through ``p1``, direction ``u1``) and line 2.
+    """The relation of line 1 (through ``p1``, direction ``u1``) and line 2, by
+    :func:`dhlab.lines.relation`. ``tol`` is relative: lines closer than ``tol`` times
+    the size of the coordinates (at least 1) meet; directions less than 1e-9 rad apart
+    are parallel.
 
     >>> axis_relation([0, 0, 0], [0, 0, 1], [1, 0, 5], [0, 0, -1])
     Relation(kind='parallel', distance=1.0, angle=180.0)
     >>> axis_relation([0, 0, 0], [0, 0, 1], [0.2, 0, 0.5], [0, 1, 0]).kind
     'skew'
     """
-    p1, u1, p2, u2 = (np.asarray(v, dtype=float) for v in (p1, u1, p2, u2))
-    u1, u2 = u1 / np.linalg.norm(u1), u2 / np.linalg.norm(u2)
-    scale = max(1.0, float(np.abs(p1).max()), float(np.abs(p2).max()))
-    n = np.cross(u1, u2)
-    s = float(np.linalg.norm(n))
-    w = p2 - p1
-    angle = math.degrees(math.atan2(s, float(u1 @ u2)))
-    if s < 1e-9:
-        distance = float(np.linalg.norm(w - (w @ u1) * u1))
-        kind = "coincident" if distance < tol * scale else "parallel"
-    else:
-        distance = abs(float(w @ n)) / s
-        kind = "intersect" if distance < tol * scale else "skew"
-    return Relation(kind, round(distance, 12) + 0.0, round(angle, 9) + 0.0)
-
-
-def _foot_on_first(p1, u1, p2, u2) -> float:
-    """Where (parameter along unit u1 from p1) the common normal meets line 1 (lines not parallel)."""
-    b, w = float(u1 @ u2), p2 - p1
-    return float((w @ u1 - b * (w @ u2)) / (1 - b * b))
+    a, b = Line(p1, u1), Line(p2, u2)
+    scale = max(1.0, float(np.abs(a.point).max()), float(np.abs(b.point).max()))
+    rel = relation(a, b, tol=tol * scale, angle_tol=1e-9)
+    return Relation(rel.kind, round(rel.distance, 12) + 0.0, round(rel.angle, 9) + 0.0)
 
 
 def _axes_of(robot, q):
@@ -371,7 +360,7 @@ def compare_robots(student, reference, samples: int = 50, seed: int = 0) -> list
         for k in range(1, n + 1):
             # a prismatic axis is a direction: where its line lies is free (ERRATA 002-n2)
             off_line = 0.0 if reference.links[k - 1].is_prismatic else \
-                np.linalg.norm(np.cross(sp_[k - 1] - rp[k - 1], ru[k - 1]))
+                Line(rp[k - 1], ru[k - 1]).distance_to_point(sp_[k - 1])
             if su[k - 1] @ ru[k - 1] < 1 - 1e-9 or off_line > tol:
                 return [_diagnose_axis(student, reference, k, q, tol)]
         p_s = np.asarray(student.fk(q), dtype=float)[:3, 3]
@@ -417,9 +406,10 @@ def _diagnose_axis(student, reference, k: int, q, tol: float) -> str:
             else f"they are {_num(ref.distance)} apart"
         return f"joint {k}: your a{i} = {_num(a)} puts {axes_name} {_num(abs(a))} apart, but {what}."
     if not ref.is_parallel:
-        along_ref = _foot_on_first(rp[i - 1], ru[i - 1], rp[i], ru[i])
-        along_stu = _foot_on_first(sp_[i - 1], su[i - 1], sp_[i], su[i]) + (sp_[i - 1] - rp[i - 1]) @ ru[i - 1]
-        if abs(along_stu - along_ref) > tol:
+        # where the common normal of z_(i-1) and z_i meets z_(i-1): student's vs reference's
+        foot_ref, _ = closest_points(Line(rp[i - 1], ru[i - 1]), Line(rp[i], ru[i]))
+        foot_stu, _ = closest_points(Line(sp_[i - 1], su[i - 1]), Line(sp_[i], su[i]))
+        if abs(float((foot_stu - foot_ref) @ ru[i - 1])) > tol:
             also = ""
             if i >= 2 and axis_relation(rp[i - 2], ru[i - 2], rp[i - 1], ru[i - 1]).is_parallel:
                 also = (f" (or d{i - 1}: z{i - 2} ∥ z{i - 1}, so d{i - 1} and d{i} slide along the same "

@@ -157,7 +157,7 @@ def _relation_text(ref, i: int) -> str:
     if rel.kind == "parallel":
         return f"{a} and {b} are parallel, {rel.distance:.4g} m apart"
     if rel.kind == "skew":
-        return (f"{a} and {b} are skew: not parallel ({rel.angle:.0f}° apart) and they miss "
+        return (f"{a} and {b} are skew: not parallel ({rel.acute:.0f}° apart) and they miss "
                 f"each other by {rel.distance:.4g} m")
     return f"{a} and {b} coincide"
 
@@ -322,12 +322,12 @@ def _diagnose(ref, i: int, V, F, row: Row) -> str:
     rel = puma.relation(L_prev, L_next)
     ang_st = math.degrees(math.acos(min(1.0, abs(float(z_prev @ z)))))
     joint = f"joint {i + 1}"
-    if abs(ang_st - rel.angle) > puma.TOL_DEG:
+    if abs(ang_st - rel.acute) > puma.TOL_DEG:
         verb = "leaves it parallel" if ang_st < puma.TOL_DEG else "turns it"
-        return (f"{joint}: z{i} should be {_line_word(rel.angle)} z{i - 1}; your α{i} = {row.alpha:g}° "
-                f"{verb}{alpha_hint} (the axis of {joint} is {_line_word(rel.angle)} the axis of joint {i})")
+        return (f"{joint}: z{i} should be {_line_word(rel.acute)} z{i - 1}; your α{i} = {row.alpha:g}° "
+                f"{verb}{alpha_hint} (the axis of {joint} is {_line_word(rel.acute)} the axis of joint {i})")
     if abs(float(z @ L_next.direction)) < math.cos(math.radians(puma.TOL_DEG)):
-        return (f"{joint}: z{i} is {_line_word(rel.angle)} z{i - 1} as it should be, but points the wrong way "
+        return (f"{joint}: z{i} is {_line_word(rel.acute)} z{i - 1} as it should be, but points the wrong way "
                 f"at the home pose: x{i} must lie along the common normal of z{i - 1} and z{i} "
                 f"(at home, along ±{_vec(rel.normal, 3)}); check the constant in θ{i} "
                 f"(yours: {row.theta.const:g}°) and the sign of α{i}")

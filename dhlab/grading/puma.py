@@ -1,4 +1,4 @@
-"""The PUMA 560 that the assignment is checked against, and the geometry of lines.
+"""The PUMA 560 that the assignment is checked against, with the grader's tolerances.
 
 The reference is :func:`dhlab.robots.puma560` (P. Corke's ``mdl_puma560``, metres),
 with **frame 0 at the shoulder**: the world frame of the assignment's picture, origin
@@ -10,7 +10,8 @@ at the wrist centre W, where the axes of joints 4, 5 and 6 meet.
 
 What every valid DH answer shares (DH frames are not unique) is computed here from
 the reference robot, never typed: the **joint axes** as directed lines, the wrist
-centre, and the **links' points** in the world at the home pose.
+centre, and the **links' points** in the world at the home pose. How two axes
+lie is :func:`dhlab.lines.relation`, with the grader's tolerances (:func:`relation`).
 
 >>> ref = reference()
 >>> [round(float(v), 5) for v in ref.wrist_centre]
@@ -26,7 +27,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Line", "Relation", "relation", "Reference", "reference", "LINK_NAMES",
+from ..lines import Line, LineRelation
+from ..lines import relation as line_relation
+
+__all__ = ["Line", "relation", "Reference", "reference", "LINK_NAMES",
            "dh_frames", "TOL_POS", "TOL_DEG"]
 
 TOL_POS = 2e-3        # metres: a student who types 0.15 for 0.15005 is right
@@ -35,57 +39,12 @@ TOL_DEG = 0.5         # degrees, for directions
 LINK_NAMES = ["base (pedestal)", "trunk", "upper arm", "forearm", "wrist yoke", "wrist", "gripper"]
 
 
-@dataclass(frozen=True)
-class Line:
-    """A directed line: a point on it and a unit direction."""
-    point: np.ndarray
-    direction: np.ndarray
-
-    def distance_to_point(self, p) -> float:
-        v = np.asarray(p, float) - self.point
-        return float(np.linalg.norm(v - (v @ self.direction) * self.direction))
-
-
-@dataclass(frozen=True)
-class Relation:
-    """How two lines meet: ``kind`` is 'intersect', 'parallel', 'skew' or 'coincident'.
-
-    ``angle`` is the angle between the lines (degrees, 0…90, ignoring direction),
-    ``distance`` the length of their common normal, ``foot`` the point of the second
-    line nearest the first (where the DH origin goes), ``normal`` the unit common
-    normal from the first line towards the second (for intersecting lines, the
-    direction of first × second; None for coincident lines).
-    """
-    kind: str
-    angle: float
-    distance: float
-    foot: np.ndarray
-    normal: np.ndarray | None
-
-
-def relation(l1: Line, l2: Line, tol: float = TOL_POS) -> Relation:
-    """The relation of two lines (the three cases for x_i of the DH convention)."""
-    u, v = l1.direction, l2.direction
-    w = l2.point - l1.point
-    cross = np.cross(u, v)
-    angle = math.degrees(math.acos(min(1.0, abs(float(u @ v)))))
-    if np.linalg.norm(cross) < math.sin(math.radians(TOL_DEG)):
-        perp = w - (w @ u) * u                      # from line 1 to line 2, square to both
-        dist = float(np.linalg.norm(perp))
-        if dist <= tol:
-            return Relation("coincident", angle, dist, l2.point.copy(), None)
-        return Relation("parallel", angle, dist, l2.point.copy(), perp / dist)
-    n = cross / np.linalg.norm(cross)
-    signed = float(w @ n)
-    # the points of the two lines nearest each other: l1.point + s u, l2.point + t v
-    a, b, c = 1.0, float(u @ v), 1.0
-    d, e = float(u @ w), float(v @ w)
-    den = a * c - b * b
-    t = (b * d - a * e) / den
-    foot = l2.point + t * v
-    if abs(signed) <= tol:
-        return Relation("intersect", angle, abs(signed), foot, n)
-    return Relation("skew", angle, abs(signed), foot, n * math.copysign(1.0, signed))
+def relation(l1: Line, l2: Line, tol: float = TOL_POS) -> LineRelation:
+    """How axis ``l2`` lies with respect to axis ``l1`` (the three cases for x_i of the DH
+    convention): :func:`dhlab.lines.relation` with the grader's tolerances — lines less
+    than ``tol`` metres apart meet, directions less than ``TOL_DEG`` degrees apart are
+    parallel. ``.acute`` is the angle between the axes, 0…90°."""
+    return line_relation(l1, l2, tol=tol, angle_tol=math.radians(TOL_DEG))
 
 
 def dh_frames(rows, Q) -> np.ndarray:
