@@ -601,15 +601,13 @@ def teach(namespace, **options):
         return Note(str(e))
     state = {}
 
-    def draw_links(q):
+    def draw_links(q):          # runs before the panel draws: only move the line
         line = state.get("line")
         if line is not None:
             line.set_data_3d(*_link_lines(robot.frames(q), points).T)
-            state["panel"].view.draw()
 
     panel = _teach(robot, on_change=draw_links, **options)
     state["line"], = panel.view.ax.plot([], [], [], "-", color="C3", lw=3, alpha=0.8)
-    state["panel"] = panel
     panel.view.live.add_moving(state["line"])
     panel.set_q(panel.q)
     return panel

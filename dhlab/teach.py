@@ -95,12 +95,13 @@ class TeachPanel(Panel):
         if self._quiet:
             return
         q = self.q
-        self.view.update(q)
-        T = np.asarray(self.robot.fk(q), dtype=float)
+        self.view.update(q, draw=False)
+        T = self.view.frames[-1]          # the end effector: the view has just computed it
         self.readout.value = pose_text(T, getattr(self.robot, "unit", ""))
         self.matrix.value = matrix_html(T, f"<sup>0</sup>T<sub>{self.robot.n}</sub>")
         if self.on_change is not None:
-            self.on_change(q)
+            self.on_change(q)             # before the draw: a callback may move its own artists
+        self.view.draw()                  # one draw per update
 
     def __repr__(self):
         return f"<dhlab teach panel: {self.robot.name}, {self.robot.n} joints>"
@@ -113,8 +114,10 @@ def teach(robot, q=None, *, on_change=None, planar=None, figsize=None,
     end-effector pose and 4x4 matrix.
 
     ``q``: the starting pose (radians / length units; default zero, clipped to
-    the limits). ``on_change(q)``: called after every move, e.g. to check an
-    exercise (its errors are shown in the panel). ``planar``: force the 2D
+    the limits). ``on_change(q)``: called after every move, just before the
+    figure is drawn, e.g. to check an exercise (its errors are shown in the
+    panel) or to move artists of your own (add them with
+    ``panel.view.live.add_moving``; no extra draw is needed). ``planar``: force the 2D
     (True) or 3D (False) view. ``figsize``: inches (default
     from the workspace's shape). ``backend``: 'auto', 'ipympl' or 'image'.
     """

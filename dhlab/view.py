@@ -203,8 +203,8 @@ class RobotView:
         """Move the robot to ``q`` (radians / length units). ``draw=False`` only
         moves the artists (a panel updating several views draws once)."""
         frames = np.asarray(self.robot.frames(q), dtype=float)
-        if self.has_tool:
-            frames = np.concatenate([frames, np.asarray(self.robot.fk(q), dtype=float)[None]])
+        if self.has_tool:                 # the end effector is frame n moved by the tool
+            frames = np.concatenate([frames, (frames[-1] @ self.robot.tool)[None]])
         self.q = np.array(q, dtype=float)
         self.frames = frames
         self._place(frames)

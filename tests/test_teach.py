@@ -88,6 +88,18 @@ def test_set_q_moves_all_sliders_and_redraws_once():
     np.testing.assert_allclose(panel.view.frames, robot.frames(q), atol=1e-12)
 
 
+def test_one_draw_per_update_with_on_change_before_it():
+    robot = robots.puma560()
+    events = []
+    panel = teach(robot, on_change=lambda q: events.append("on_change"))
+    draw = panel.view.live.refresh
+    panel.view.live.refresh = lambda: (events.append("draw"), draw())[1]
+    events.clear()
+    panel.sliders[2].value = 25
+    assert events == ["on_change", "draw"]
+    np.testing.assert_allclose(panel.view.frames[-1], robot.fk(panel.q), atol=1e-12)
+
+
 def test_image_backend_shows_each_update():
     panel = teach(robots.pr_mechanism(), backend="image")
     assert isinstance(panel.children[0], widgets.Image)
