@@ -68,40 +68,35 @@ def _source(cell) -> str:
     return "".join(source) if isinstance(source, list) else source
 
 
-def clear_solutions(source: str, stub: str) -> tuple:
-    """nbgrader's ClearSolutions on one cell's text: (new text, whether a region was replaced)."""
-    out, inside, replaced = [], False, False
+def _cut_regions(source: str, begin: str, end: str, what: str, stub=None) -> tuple:
+    """Cut every ``begin`` … ``end`` region out of one cell's text, putting ``stub`` (indented
+    like the begin line) in its place when given: (new text, whether a region was found)."""
+    out, inside, found = [], False, False
     for line in source.split("\n"):
-        if BEGIN_SOLUTION in line:
+        if begin in line:
             if inside:
-                raise GenerateError("nested BEGIN SOLUTION")
-            inside = replaced = True
-            indent = re.match(r"\s*", line).group(0)
-            out += [indent + s for s in stub.split("\n")]
-        elif END_SOLUTION in line:
+                raise GenerateError(f"nested BEGIN {what}")
+            inside = found = True
+            if stub is not None:
+                indent = re.match(r"\s*", line).group(0)
+                out += [indent + s for s in stub.split("\n")]
+        elif end in line:
             inside = False
         elif not inside:
             out.append(line)
     if inside:
-        raise GenerateError("BEGIN SOLUTION without END SOLUTION")
-    return "\n".join(out), replaced
+        raise GenerateError(f"BEGIN {what} without END {what}")
+    return "\n".join(out), found
+
+
+def clear_solutions(source: str, stub: str) -> tuple:
+    """nbgrader's ClearSolutions on one cell's text: (new text, whether a region was replaced)."""
+    return _cut_regions(source, BEGIN_SOLUTION, END_SOLUTION, "SOLUTION", stub)
 
 
 def remove_hidden_tests(source: str) -> tuple:
     """nbgrader's ClearHiddenTests on one cell's text: (new text, whether a region was removed)."""
-    out, inside, removed = [], False, False
-    for line in source.split("\n"):
-        if BEGIN_HIDDEN in line:
-            if inside:
-                raise GenerateError("nested BEGIN HIDDEN TESTS")
-            inside = removed = True
-        elif END_HIDDEN in line:
-            inside = False
-        elif not inside:
-            out.append(line)
-    if inside:
-        raise GenerateError("BEGIN HIDDEN TESTS without END HIDDEN TESTS")
-    return "\n".join(out), removed
+    return _cut_regions(source, BEGIN_HIDDEN, END_HIDDEN, "HIDDEN TESTS")
 
 
 def check_metadata(cells) -> None:
