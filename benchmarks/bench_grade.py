@@ -52,7 +52,7 @@ def grade(folder: Path, jobs: int, expected: dict) -> float:
     """Seconds for one `dhlab-grade` run (a fresh process, as a teacher runs it)."""
     out = folder.parent / f"gradebook-j{jobs}.csv"
     started = time.perf_counter()
-    proc = subprocess.run([sys.executable, "-m", "dhlab.grade", "puma", str(folder), "-o", str(out),
+    proc = subprocess.run([sys.executable, "-m", "dhlab.grading.cli", "puma", str(folder), "-o", str(out),
                            "-j", str(jobs), "-q"], capture_output=True, text=True)
     seconds = time.perf_counter() - started
     if proc.returncode != 0:

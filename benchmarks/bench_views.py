@@ -38,8 +38,8 @@ from matplotlib.figure import Figure  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 import dhlab  # noqa: E402
-from dhlab.teach import teach  # noqa: E402
-from dhlab.view import AXIS_COLORS, EE_COLOR, LINK_COLOR, triad_segments  # noqa: E402
+from dhlab.views.teach import teach  # noqa: E402
+from dhlab.views.view import AXIS_COLORS, EE_COLOR, LINK_COLOR, triad_segments  # noqa: E402
 
 FIGSIZE, DPI = (6, 6), 100
 

@@ -27,10 +27,30 @@ __version__ = "0.1.0"
 
 # The interactive views (imported here, after the maths, so that ``dhlab.teach`` is the
 # function even once the submodule of the same name has been imported).
-from . import view
-from .spaces import spaces
-from .stepthrough import stepthrough, stepthrough_link
-from .teach import teach
-from .view import robot_view
+from .views import view
+from .views.spaces import spaces
+from .views.stepthrough import stepthrough, stepthrough_link
+from .views.teach import teach
+from .views.view import robot_view
 
 __all__ += ["teach", "robot_view", "stepthrough", "stepthrough_link", "spaces", "view"]
+
+# The package was split into maths (here), views/, course/ and grading/. The old module paths
+# (``from dhlab.teach import teach``, ``import dhlab.exercises``, ``python -m dhlab.grade``) still
+# work: each names the module at its new place.
+import sys as _sys
+
+from .course import assignment, exercises, exercises_dh
+from .grading import cli as _grade_cli
+from .views import livefigure, panel
+from .views import spaces as _spaces_module
+from .views import stepthrough as _stepthrough_module
+from .views import teach as _teach_module
+
+for _old, _module in {
+    "view": view, "livefigure": livefigure, "panel": panel, "spaces": _spaces_module,
+    "stepthrough": _stepthrough_module, "teach": _teach_module, "exercises": exercises,
+    "exercises_dh": exercises_dh, "assignment": assignment, "grade": _grade_cli,
+}.items():
+    _sys.modules[f"{__name__}.{_old}"] = _module
+del _old, _module, _sys

@@ -7,7 +7,7 @@ import sympy as sp
 
 import dhlab
 from dhlab import deg
-from dhlab.exercises import (Exercise, Feedback, _seed000_DefinirTHz, available, check_choice, check_function,
+from dhlab.course.exercises import (Exercise, Feedback, _seed000_DefinirTHz, available, check_choice, check_function,
                              check_matrix, check_solutions, check_terms, check_value, exercise,
                              seed001_DefinirTHz)
 from dhlab.transforms import Rx, Rz, inv, trans

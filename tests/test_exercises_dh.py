@@ -13,7 +13,7 @@ import sympy as sp
 import dhlab
 from dhlab import robots
 from dhlab.assign import dh_from_axes, joint_axes
-from dhlab.exercises_dh import (WRIST_Q_DEG, available, axis_relation, check_dh_row, check_key_jump,
+from dhlab.course.exercises_dh import (WRIST_Q_DEG, available, axis_relation, check_dh_row, check_key_jump,
                                 check_link_matrix, check_parallel_pairs, check_table, check_thlist_slots,
                                 check_wrist_centre, check_x_cases, compare_robots, exercise, four_axis_arm,
                                 link_exercise_robot, parallel_pairs, printed_key_position, row_exercise_frames)

@@ -41,7 +41,7 @@ def batch(tmp_path_factory):
     out.write_text("an old gradebook\n")
     # a generous time per cell: on a busy machine the first cell (imports) can take seconds
     argv = ["puma", str(folder), "-o", str(out), "-j", "2", "--timeout", "20", "--total-timeout", "90"]
-    proc = subprocess.run([sys.executable, "-m", "dhlab.grade", *argv], capture_output=True, text=True, timeout=600)
+    proc = subprocess.run([sys.executable, "-m", "dhlab.grading.cli", *argv], capture_output=True, text=True, timeout=600)
     with open(out, newline="", encoding="utf-8") as f:
         rows = {row["submission"]: row for row in csv.DictReader(f)}
     return {"rows": rows, "proc": proc, "feedback": out.with_name("gradebook_feedback"), "csv": out,
@@ -168,7 +168,7 @@ def test_usage_errors(tmp_path):
         grade.main(["puma", str(tmp_path / "missing")])
     with pytest.raises(SystemExit):
         grade.main(["other", str(tmp_path)])
-    proc = subprocess.run([sys.executable, "-m", "dhlab.grade", "--help"], capture_output=True, text=True)
+    proc = subprocess.run([sys.executable, "-m", "dhlab.grading.cli", "--help"], capture_output=True, text=True)
     assert proc.returncode == 0 and "SUBMISSIONS" in proc.stdout.upper()
 
 

@@ -12,7 +12,7 @@ import pytest  # noqa: E402
 
 import dhlab  # noqa: E402
 from dhlab import livefigure, robots  # noqa: E402
-from dhlab.teach import teach  # noqa: E402
+from dhlab.views.teach import teach  # noqa: E402
 from ipywidgets.widgets.widget import _instances  # noqa: E402  (every live widget)
 
 

@@ -9,8 +9,8 @@ import pytest  # noqa: E402
 
 import dhlab  # noqa: E402
 from dhlab import robots  # noqa: E402
-from dhlab.livefigure import LiveFigure, encode_png  # noqa: E402
-from dhlab.view import (RobotView2D, RobotView3D, robot_view, triad_segments,  # noqa: E402
+from dhlab.views.livefigure import LiveFigure, encode_png  # noqa: E402
+from dhlab.views.view import (RobotView2D, RobotView3D, robot_view, triad_segments,  # noqa: E402
                         workspace_box)
 
 ROBOTS_3D = [robots.ssrms, robots.puma560, robots.seed002_4dof, robots.seed003_6dof, robots.rrr_example]

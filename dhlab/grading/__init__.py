@@ -8,5 +8,5 @@
 * :mod:`dhlab.grading.gradebook` — the CSV and feedback files;
 * :mod:`dhlab.grading.generate` — the student notebook from the source notebook.
 
-The command line is :mod:`dhlab.grade` (``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv``).
+The command line is :mod:`dhlab.grading.cli` (``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv``).
 """

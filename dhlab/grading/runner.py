@@ -133,7 +133,7 @@ def scan_for_tampering(cells) -> list:
     It changes nothing (the grader checks in its own process); the teacher sees it
     in the status.
 
-    >>> scan_for_tampering([(3, "import dhlab.assignment as A\\nA.check_part1 = lambda ns: 'all right'")])
+    >>> scan_for_tampering([(3, "import dhlab.course.assignment as A\\nA.check_part1 = lambda ns: 'all right'")])
     ['cell 3: assigns A.check_part1']
     """
     found = []

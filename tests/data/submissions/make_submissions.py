@@ -98,7 +98,7 @@ text = (OUT / "mistake_part1.ipynb").read_text()
 make("hostile_invalid_json.ipynb", raw=text[: len(text) // 2])
 make("hostile_not_a_notebook.ipynb", raw=json.dumps({"student": "me", "answers": "in my head"}))
 MONKEY = '''import dhlab, dhlab.assignment, dhlab.grading.checks, dhlab.grading.answers
-from dhlab.assignment import check_part3
+from dhlab.course.assignment import check_part3
 # make every check say "full marks"
 dhlab.assignment.check_part3 = lambda ns: "Part 3 (the transformations and their chain): 5/5 points"
 check_part3 = dhlab.assignment.check_part3

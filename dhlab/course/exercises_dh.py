@@ -24,12 +24,12 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from . import robots
-from .dh import DHRobot
+from .. import robots
+from ..dh import DHRobot
 from .exercises import NOT_ANSWERED, Exercise, Feedback, check_matrix, check_value
-from .lines import Line, closest_points, relation
-from .transforms import Rx, Rz, dh_matrix, trans
-from .validation import DHLabError
+from ..lines import Line, closest_points, relation
+from ..transforms import Rx, Rz, dh_matrix, trans
+from ..validation import DHLabError
 
 __all__ = [
     "exercise", "available",

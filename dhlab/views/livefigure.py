@@ -40,7 +40,7 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from .validation import DHLabError
+from ..validation import DHLabError
 
 __all__ = ["LiveFigure", "ipympl_active", "forget_previous_run", "encode_png"]
 

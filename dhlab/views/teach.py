@@ -2,7 +2,7 @@
 end-effector pose and matrix read live.
 
 >>> import dhlab
->>> from dhlab.teach import teach                 # also dhlab.teach
+>>> from dhlab.views.teach import teach                 # also dhlab.teach
 >>> panel = teach(dhlab.robots.ssrms())           # display it: last line of a cell
 >>> panel.sliders[1].value = 30                   # degrees, exactly like dragging it
 >>> round(float(panel.q[1]), 6)                   # the maths gets radians
@@ -18,7 +18,7 @@ import numpy as np
 import ipywidgets as widgets
 
 from .panel import Panel, checked_start, joint_sliders, q_to_slider, slider_to_q
-from .transforms import rpy
+from ..transforms import rpy
 from .view import default_q, robot_view
 
 __all__ = ["teach", "TeachPanel", "pose_text", "matrix_html"]

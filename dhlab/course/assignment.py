@@ -32,11 +32,11 @@ import re
 
 import numpy as np
 
-from .grading import answers as _answers
-from .grading import checks as _checks
-from .grading import puma as _puma
-from .units import is_angle
-from .validation import DHLabError
+from ..grading import answers as _answers
+from ..grading import checks as _checks
+from ..grading import puma as _puma
+from ..units import is_angle
+from ..validation import DHLabError
 
 __all__ = ["joint_variables", "Tz", "Tx", "JointTerm", "ZFactor", "XFactor", "DHTransform", "DHChain",
            "check_part1", "check_part2", "check_part3", "check_part", "Feedback",
@@ -217,7 +217,7 @@ class DHTransform:
 
     def matrix(self, q=None):
         """The 4x4 matrix: numeric at joint value ``q`` (radians), symbolic in q_i when omitted."""
-        from . import transforms
+        from .. import transforms
         theta, d = self.z.theta, self.z.d
         if q is None:
             import sympy as sp
@@ -516,8 +516,8 @@ def _rows_from(namespace):
 def robot_of(namespace):
     """Your robot, from T1…T6 (or chain) in ``namespace``, as a :class:`dhlab.Robot`
     whose joint i is your q_i (limits: the PUMA's)."""
-    from .chain import Link, Move, Robot, Rot
-    from .robots import PUMA_QLIM_DEG
+    from ..chain import Link, Move, Robot, Rot
+    from ..robots import PUMA_QLIM_DEG
 
     rows, _ = _rows_from(namespace)
     links = []
@@ -592,7 +592,7 @@ def teach(namespace, **options):
     """A teach panel (sliders in degrees) for your robot: your links assembled by your
     transformations, with your DH frames (x red, y green, z blue). Not scored.
     Before part 3 is answered: a :class:`Note` saying so."""
-    from .teach import teach as _teach
+    from ..views.teach import teach as _teach
 
     try:
         _, points = _rows_from(namespace)

@@ -23,11 +23,11 @@ import math
 import ipywidgets as widgets
 import numpy as np
 
-from .validation import DHLabError
+from ..validation import DHLabError
 from .livefigure import LiveFigure
 from .panel import Panel
 from .teach import matrix_html
-from .transforms import Rx, Rz, trans
+from ..transforms import Rx, Rz, trans
 from .view import AXIS_COLORS, FrameLabels3D, triad_segments
 
 __all__ = ["dh_partial", "dh_params", "motion_text", "stepthrough", "stepthrough_link",

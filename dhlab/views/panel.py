@@ -22,7 +22,7 @@ import traceback
 import ipywidgets as widgets
 import numpy as np
 
-from .validation import DHLabError
+from ..validation import DHLabError
 from .livefigure import LiveFigure, forget_previous_run
 
 __all__ = ["Panel", "joint_sliders", "slider_to_q", "q_to_slider", "unit_of", "checked_start"]

@@ -1,7 +1,7 @@
 """Grade a folder of submitted PUMA notebooks: ``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv``.
 
     dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv [-j N] [--timeout S]
-    python -m dhlab.grade puma SUBMISSIONS_DIR ...          (the same)
+    python -m dhlab.grading.cli puma SUBMISSIONS_DIR ...          (the same)
 
 Every ``*.ipynb`` under SUBMISSIONS_DIR (any depth, e.g. nbgrader's
 ``submitted/<student>/<assignment>/``) is one submission. Each one is run by its
@@ -52,7 +52,7 @@ def _dhlab_fingerprint() -> str:
     """A hash of the files the grading reads from disk while it runs (the runner, the
     kernel's launcher, the answers' reader): a submission must not be able to change them.
     The checks themselves are loaded into this process before any submission runs."""
-    from .grading import runner
+    from . import runner
     h = hashlib.sha256()
     for path in sorted(runner.RUNNER.parent.glob("*.py")):
         h.update(path.name.encode())
@@ -95,7 +95,7 @@ def run_submission(path: Path, options, retries: int = 2) -> dict:
 
 def _run_once(path: Path, options, skip) -> tuple:
     """(result dict, the cell that was running when the runner stopped or None)."""
-    from .grading.runner import RUNNER
+    from .runner import RUNNER
     with tempfile.TemporaryDirectory(prefix="dhlab-grade-") as tmp:
         tmp = Path(tmp)
         result, pid_file, log = tmp / "result.json", tmp / "kernel.pid", tmp / "runner.log"
@@ -138,9 +138,9 @@ def _run_once(path: Path, options, skip) -> tuple:
 
 def grade_submission(path: Path, folder: Path, options) -> dict:
     """Run, read the answers, score in this process: one gradebook row (+ feedback text)."""
-    from .grading import checks
-    from .grading.answers import Answers, Unreadable, parse_json
-    from .grading.gradebook import PART_COLUMNS, feedback_filename, feedback_text, status_text
+    from . import checks
+    from .answers import Answers, Unreadable, parse_json
+    from .gradebook import PART_COLUMNS, feedback_filename, feedback_text, status_text
 
     started = time.monotonic()
     submission = path.relative_to(folder).with_suffix("").as_posix()
@@ -167,8 +167,8 @@ def grade_submission(path: Path, folder: Path, options) -> dict:
 
 def _error_row(path, folder, exc) -> dict:
     """The row of a submission the grader itself failed on (it keeps the batch going)."""
-    from .grading.checks import POINTS
-    from .grading.gradebook import PART_COLUMNS, feedback_filename
+    from .checks import POINTS
+    from .gradebook import PART_COLUMNS, feedback_filename
     submission = path.relative_to(folder).with_suffix("").as_posix()
     status = f"grader error: {type(exc).__name__}: {str(exc)[:150]}"
     row = {"submission": submission, "score": "0", "max_score": sum(POINTS.values()), "status": status, "seconds": "0",
@@ -254,8 +254,8 @@ def main(argv=None) -> int:
         return 2
     feedback_dir = options.feedback_dir or options.output.with_name(options.output.stem + "_feedback")
 
-    from .grading import checks
-    from .grading.gradebook import write_atomic, write_csv
+    from . import checks
+    from .gradebook import write_atomic, write_csv
     checks.check_all(checks.Answers())            # build the reference before any student code runs
 
     fingerprint = _dhlab_fingerprint()

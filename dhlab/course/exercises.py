@@ -51,8 +51,8 @@ import unicodedata
 import numpy as np
 import sympy as sp
 
-from .transforms import Rx, Ry, Rz, inv, trans
-from .units import deg
+from ..transforms import Rx, Ry, Rz, inv, trans
+from ..units import deg
 
 __all__ = ["Feedback", "Exercise", "check_matrix", "check_value", "check_solutions", "check_choice",
            "check_terms", "check_function", "exercise", "available", "seed001_DefinirTHz"]

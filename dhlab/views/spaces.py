@@ -27,7 +27,7 @@ import numpy as np
 from matplotlib.patches import Rectangle
 from matplotlib.transforms import offset_copy
 
-from .validation import DHLabError
+from ..validation import DHLabError
 from .livefigure import LiveFigure
 from .panel import Panel, checked_start, joint_sliders, q_to_slider, slider_to_q, unit_of
 from .view import default_q, robot_view
