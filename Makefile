@@ -21,7 +21,7 @@ $(READY):
 	rm -rf $(VENV)
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -c constraints.txt -e ".[test]"
+	$(BIN)/python -m pip install --quiet -c constraints.txt -e ".[lab,test]"
 	$(BIN)/python -m ipykernel install --sys-prefix --name python3 --display-name "Python 3 (dhlab)" >/dev/null
 	@# no news or update pop-ups over a projected lecture
 	mkdir -p $(VENV)/share/jupyter/lab/settings
