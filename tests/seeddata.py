@@ -3,7 +3,7 @@ and the A matrices printed in seed 002. Imported by the tests as ``seeddata``.""
 import json
 from pathlib import Path
 
-DATA = Path(__file__).parent / "data"
+DATA = Path(__file__).resolve().parents[1] / "dhlab" / "data"   # shipped with the package
 
 
 def load_cases() -> list:

@@ -62,7 +62,7 @@ def notebooks():
 
 @pytest.fixture(scope="module")
 def seed_cases():
-    path = Path(__file__).parent / "data" / "seed_cases.json"
+    path = Path(__file__).resolve().parents[1] / "dhlab" / "data" / "seed_cases.json"
     return {c["id"]: c for c in json.loads(path.read_text(encoding="utf-8"))["cases"]}
 
 

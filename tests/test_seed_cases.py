@@ -54,7 +54,7 @@ def test_every_case_is_used():
 
 
 def test_reference_copy_is_current():
-    """tests/data/seed_cases.json is the shared reference, byte for byte (when shared/ is beside us)."""
+    """dhlab/data/seed_cases.json is the shared reference, byte for byte (when shared/ is beside us)."""
     shared = Path(__file__).resolve().parents[2] / "shared" / "reference" / "seed_cases.json"
     if not shared.exists():
         pytest.skip("shared/ is not beside this checkout")
