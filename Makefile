@@ -35,9 +35,17 @@ lab: $(READY)
 test: $(READY)
 	$(BIN)/python -m pytest $(XDIST)
 
+# Every notebook in JupyterLab + Chromium (inline and ipympl), the teach panel in Voilà, the
+# key-to-pixels latency; screenshots and latency.json are left in tests/browser/results/.
 test-browser: $(READY)
 	bash tests/browser/setup.sh
-	$(BIN)/python -m pytest tests/browser --browser -p no:xdist
+	$(BIN)/python -m pytest tests/browser --browser -p no:xdist --durations=5
+
+# The README's picture (notebooks/images/teach_ssrms.png), taken by the browser tier
+.PHONY: screenshots
+screenshots: $(READY)
+	bash tests/browser/setup.sh
+	DHLAB_UPDATE_SCREENSHOTS=1 $(BIN)/python -m pytest tests/browser/test_readme_picture.py --browser -p no:xdist -q
 
 # nbgrader is installed only for this tier (students and our grader do not need it)
 test-nbgrader: $(READY)
@@ -49,10 +57,38 @@ bench: $(READY)
 	$(BIN)/python benchmarks/run_all.py
 
 # Re-execute every notebook in place (finite timeout), so stored outputs match the code;
-# the student version of the PUMA assignment is generated from its source, not executed.
+# the student version of the PUMA assignment is generated from its source (the teacher's
+# solutions, kept out of notebooks/ as package data), not executed.
 notebooks: $(READY)
-	$(BIN)/python -m dhlab.execute $(filter-out notebooks/08_puma_assignment.ipynb,$(wildcard notebooks/*.ipynb)) notebooks/source/*.ipynb
+	$(BIN)/python -m dhlab.execute $(filter-out notebooks/08_puma_assignment.ipynb,$(wildcard notebooks/*.ipynb)) dhlab/grading/data/08_puma_assignment.ipynb
 	$(BIN)/python -m dhlab.grading.generate
 
 clean:
 	rm -rf $(VENV) .pytest_cache build *.egg-info
+
+# The browser edition (JupyterLite + a self-hosted Pyodide 0.27.7): `make lite` builds the static
+# site build/lite/ (publish that folder on any web server, GitHub Pages included); its build tools
+# live in their own venv, build/lite-venv. `make lite-serve` serves it on 127.0.0.1 (PORT=8000).
+LITE_VENV  := build/lite-venv
+LITE_READY := $(LITE_VENV)/.ready-$(shell cat lite/requirements.txt | cksum | cut -d' ' -f1)
+
+.PHONY: lite lite-serve test-lite
+
+$(LITE_READY):
+	rm -rf $(LITE_VENV)
+	$(PYTHON) -m venv $(LITE_VENV)
+	$(LITE_VENV)/bin/python -m pip install --quiet --upgrade pip
+	$(LITE_VENV)/bin/python -m pip install --quiet -r lite/requirements.txt
+	touch $@
+
+lite: $(LITE_READY)
+	$(LITE_VENV)/bin/python lite/build.py
+
+lite-serve:
+	@test -f build/lite/index.html || $(MAKE) lite
+	$(PYTHON) lite/serve.py --port $(or $(PORT),8000)
+
+# every notebook of the site in Chromium (Playwright); measurements in build/lite-measurements.json
+test-lite: $(READY) lite
+	bash tests/browser/setup.sh
+	$(BIN)/python -m pytest tests/lite --lite -p no:xdist

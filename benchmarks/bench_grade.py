@@ -6,6 +6,8 @@ The class is made of copies of the course's own notebooks, as students hand them
 the solutions, the test submissions with a valid alternative DH assignment and with a
 mistake in each part, and the untouched student version (one of each kind in turn).
 No hostile notebooks: they wait for time limits, which measures the limits, not the grader.
+The grader runs as it would for a teacher: as root it isolates each kernel (its own user,
+mount namespace, processes killed afterwards), and the run says which mode it measured.
 
 In one run, side by side:
   -j 2     all N submissions, two at a time (the target: under 2 minutes for 30)
@@ -27,11 +29,12 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 KINDS = {                       # notebook -> the score it must get
-    ROOT / "notebooks" / "source" / "08_puma_assignment.ipynb": 10.0,
+    ROOT / "dhlab" / "grading" / "data" / "08_puma_assignment.ipynb": 10.0,
     ROOT / "tests" / "data" / "submissions" / "valid_alternative.ipynb": 10.0,
     ROOT / "tests" / "data" / "submissions" / "mistake_part1.ipynb": 9.5,
-    ROOT / "tests" / "data" / "submissions" / "mistake_part2.ipynb": 9.14,
+    ROOT / "tests" / "data" / "submissions" / "mistake_part2.ipynb": 9.57,
     ROOT / "tests" / "data" / "submissions" / "mistake_part3.ipynb": 8.57,
+    ROOT / "tests" / "data" / "submissions" / "slip_alpha1.ipynb": 9.29,
     ROOT / "notebooks" / "08_puma_assignment.ipynb": 0.0,
 }
 
@@ -57,6 +60,8 @@ def grade(folder: Path, jobs: int, expected: dict) -> float:
     seconds = time.perf_counter() - started
     if proc.returncode != 0:
         raise SystemExit(f"dhlab-grade failed:\n{proc.stderr[-2000:]}")
+    if "not isolated" in proc.stderr:
+        print("(measured without isolation: " + proc.stderr.split("not isolated:", 1)[1].splitlines()[0].strip() + ")")
     with open(out, newline="", encoding="utf-8") as f:
         scores = {row["submission"]: float(row["score"]) for row in csv.DictReader(f)}
     wrong = {k: (scores.get(k), v) for k, v in expected.items() if abs(scores.get(k, -1) - v) > 0.01}

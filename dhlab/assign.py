@@ -63,7 +63,7 @@ from .lines import Line, relation
 from .symbolic import exact_angle
 from .table import format_angle, format_length
 from .transforms import inv
-from .validation import FULL_TURN, DHLabError, as_float_array, rigid_problem
+from .validation import FULL_TURN, DHLabError, as_float_array, check_joint_values, rigid_problem
 
 __all__ = ["dh_from_axes", "dh_assignment", "joint_axes", "DHAssignment", "FrameStep"]
 
@@ -300,7 +300,10 @@ def joint_axes(robot, q=None):
     >>> [(p.tolist(), d.tolist(), kind) for p, d, kind in axes]
     [([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 'R'), ([0.0, 0.7, 0.0], [0.0, 0.0, 1.0], 'R')]
     """
-    q = robot.qz if q is None else q
+    if not (hasattr(robot, "_numeric") and hasattr(robot, "frames")):
+        raise DHLabError(f"joint_axes needs a dhlab robot (DHRobot or Robot), e.g. joint_axes(dhlab.robots.ssrms()); "
+                         f"got {_short(robot)}.")
+    q = robot.qz if q is None else check_joint_values(q, robot.links, single=True)
     frames = robot.frames(q)
     axes = []
     for i, factors in enumerate(robot._numeric):

@@ -25,9 +25,12 @@ import numpy as np
 import sympy as sp
 
 from . import kinematics
-from .symbolic import compact, exact, exact_angle, exact_length, legend, simplify_chain
+from .symbolic import chain_product, compact, exact, exact_angle, exact_length, legend, simplify_chain
 from .transforms import Rx, Ry, Rz, trans
-from .validation import DHLabError, as_matrix4, check_joint_values, rigid_problem
+from .units import Angle
+from .validation import (DHLabError, as_angle, as_choice, as_flag, as_index, as_length, as_matrix4,
+                         as_number, as_qlim, as_text, as_timeout, check_joint_values, describe,
+                         rigid_problem)
 
 __all__ = ["Factor", "Rot", "Move", "Link", "Robot"]
 
@@ -50,12 +53,25 @@ class Factor:
     sign: int = 1
 
     def __post_init__(self):
-        if self.kind not in ("R", "T"):
-            raise DHLabError(f"Factor kind must be 'R' (rotation) or 'T' (translation), got {self.kind!r}.")
-        if self.axis not in AXES:
-            raise DHLabError(f"Factor axis must be 'x', 'y' or 'z', got {self.axis!r}.")
-        if self.sign not in (1, -1):
-            raise DHLabError(f"Factor sign must be +1 or -1, got {self.sign!r}.")
+        as_choice(self.kind, ("R", "T"), "Factor kind ('R' rotation, 'T' translation)")
+        as_choice(self.axis, tuple(AXES), "axis")
+        object.__setattr__(self, "joint", as_flag(self.joint, "joint"))
+        if isinstance(self.sign, (bool, np.bool_)) or self.sign not in (1, -1):
+            raise DHLabError(f"sign must be +1 or -1, got {describe(self.sign)}.")
+        what = "Rot" if self.kind == "R" else "Move"
+        if isinstance(self.value, str):
+            raise DHLabError(
+                f"{what}('{self.axis}', {self.value!r}): the amount is text. For a named length or angle use "
+                f"a sympy symbol, e.g. {what}('{self.axis}', sympy.Symbol({self.value!r})), and give its number "
+                f"in the robot's params, e.g. params={{{self.value!r}: 0.5}}."
+            )
+        name = f"the amount of {what}('{self.axis}', ...)"
+        if self.kind == "R":
+            value = as_angle(self.value, name + " (radians)", symbolic=True)
+        else:
+            value = as_length(self.value, name + " (a length)", symbolic=True)
+        keep = isinstance(value, sp.Basic) or not isinstance(self.value, Angle)
+        object.__setattr__(self, "value", value if keep else self.value)   # deg() values keep their repr
 
     def matrix(self, q=0):
         """The 4x4 matrix of this motion; sympy (with exact constants) when ``q`` is a symbol."""
@@ -101,6 +117,10 @@ class Link:
     joint_index: int = field(init=False)
 
     def __post_init__(self):
+        if isinstance(self.factors, (str, bytes, dict)) or not hasattr(self.factors, "__iter__"):
+            raise DHLabError(f"a Link takes a list of motions, e.g. Link([Rot('z', joint=True), "
+                             f"Move('x', 0.5)]); got {describe(self.factors)}.")
+        self.name = as_text(self.name, "link name")
         self.factors = list(self.factors)
         moving = [i for i, f in enumerate(self.factors) if isinstance(f, Factor) and f.joint]
         if len(moving) != 1 or not all(isinstance(f, Factor) for f in self.factors):
@@ -111,10 +131,8 @@ class Link:
         self.joint_index = moving[0]
         if self.qlim is None:
             self.qlim = (-np.pi, np.pi) if self.is_revolute else DEFAULT_PRISMATIC_RANGE
-        lo, hi = (float(v) for v in self.qlim)
-        if not lo < hi:
-            raise DHLabError(f"qlim of link {self.name or ''} must be (low, high) with low < high, got {self.qlim}.")
-        self.qlim = (lo, hi)
+        label = f"qlim of link {self.name}" if self.name else "qlim"
+        self.qlim = as_qlim(self.qlim, self.is_revolute, label)
 
     @property
     def joint(self) -> Factor:
@@ -147,16 +165,11 @@ class Robot:
 
     def __init__(self, links, name: str = "robot", base=None, tool=None,
                  params=None, joint_symbols=None, unit: str = ""):
-        self.links = list(links)
-        if not self.links:
-            raise DHLabError("a robot needs at least one link.")
-        self.name = name
-        self.unit = unit
+        self.links = _link_list(links)
+        self.name = as_text(name, "name")
+        self.unit = as_text(unit, "unit")
         self.params = _numeric_params(params)
-        names = joint_symbols or [f"q{i + 1}" for i in range(self.n)]
-        if len(names) != self.n:
-            raise DHLabError(f"joint_symbols must name {self.n} joints, got {len(names)}: {list(names)}.")
-        self.q_symbols = tuple(sp.Symbol(str(s), real=True) for s in names)
+        self.q_symbols = _joint_symbols(joint_symbols, self.n)
         self._numeric = self._numeric_factors()
         self._base = self._fixed_transform(base, "base")
         self._tool = self._fixed_transform(tool, "tool")
@@ -191,7 +204,7 @@ class Robot:
     def _fixed_transform(T, name):
         if T is None:
             return np.eye(4)
-        T = as_matrix4(np.array(T, dtype=float) if isinstance(T, sp.MatrixBase) else T, name)
+        T = as_matrix4(T, name)
         problem = rigid_problem(T)
         if problem:
             raise DHLabError(f"the robot's {name} transform is not a proper rigid transform: {problem}.")
@@ -207,7 +220,7 @@ class Robot:
                     f"give it in params, e.g. params={{'{missing[0]}': 1.0}}."
                 )
             value = value.subs({s: self.params[str(s)] for s in value.free_symbols})
-        return float(value)
+        return as_number(value, where)
 
     def _numeric_factors(self):
         """Per link, its factors with numeric values (what the fast kinematics runs on)."""
@@ -260,14 +273,13 @@ class Robot:
     def A(self, i: int, q=None):
         """Link ``i``'s transform ^{i-1}A_i (1-based ``i``): numeric for a number,
         symbolic in the joint symbol when ``q`` is omitted."""
-        if not 1 <= i <= self.n:
-            raise DHLabError(f"link index must be 1…{self.n}, got {i}.")
+        i = as_index(i, "link index i", 1, self.n)
         link = self.links[i - 1]
         if q is None:
             return exact(link.A(self.q_symbols[i - 1]))
         values = [0.0] * self.n
-        values[i - 1] = q
-        value = check_joint_values(values, self.links)[i - 1]
+        values[i - 1] = q if np.ndim(q) == 0 else _one_value(q, i)
+        value = check_joint_values(values, self.links, name=f"q (joint {i})")[i - 1]
         M = np.eye(4)
         for kind, axis, const, joint, sign in self._numeric[i - 1]:
             M = M @ kinematics.elementary(kind, axis, const + sign * value if joint else const)
@@ -296,22 +308,24 @@ class Robot:
         """The symbolic ^{i-1}A_i of every link, exact (degrees like 90° become π/2)."""
         return [exact(link.A(s)) for link, s in zip(self.links, self.q_symbols)]
 
-    def fk_sym(self, simplify: bool = False):
+    def fk_sym(self, simplify: bool = False, timeout: float | None = 60.0):
         """Symbolic forward kinematics in the joint symbols (a sympy Matrix).
 
         ``simplify=True`` returns the compact form of the slides, with sums of
         the angles of parallel joints collapsed (see :mod:`dhlab.symbolic`).
+        Simplifying a long chain can take long: after ``timeout`` seconds (None:
+        no limit) it stops with a DHLabError; the kernel's stop button
+        (KeyboardInterrupt) stops it at any time.
         """
+        simplify = as_flag(simplify, "simplify")
+        timeout = as_timeout(timeout)
         base, tool = exact(sp.Matrix(self.base)), exact(sp.Matrix(self.tool))
         if simplify:
-            # DH robots merge parallel joints before multiplying; other chains are
-            # small, and collapse the sums of angles afterwards.
+            # DH robots merge parallel joints before multiplying; other chains
+            # collapse the sums of angles afterwards.
             return simplify_chain(self._sym_blocks(), base, tool, self.q_symbols,
-                                  sum_angles=not self.merges_parallel_joints)
-        T = base
-        for A in self.link_matrices_sym():
-            T = T * A
-        return T * tool
+                                  sum_angles=not self.merges_parallel_joints, timeout=timeout)
+        return chain_product([base] + self.link_matrices_sym() + [tool])
 
     merges_parallel_joints = False   # DHRobot writes parallel joints' angle sums directly
 
@@ -328,17 +342,68 @@ class Robot:
         return self.link_matrices_sym()
 
 
+def _link_list(links, expected=None, what: str = "a Link (or RevoluteDH / PrismaticDH)") -> list:
+    """The robot's links as a list of ``expected`` (default :class:`Link`), or a clear error."""
+    if isinstance(links, (str, bytes, dict, Link)) or not hasattr(links, "__iter__"):
+        raise DHLabError(f"a robot takes a list of links, e.g. [RevoluteDH(a=1), RevoluteDH(a=0.5)]; "
+                         f"got {describe(links)}.")
+    links = list(links)
+    if not links:
+        raise DHLabError("a robot needs at least one link.")
+    for i, link in enumerate(links, start=1):
+        if not isinstance(link, expected or Link):
+            raise DHLabError(f"link {i} must be {what}, got {describe(link)}.")
+    return links
+
+
+def _joint_symbols(names, n: int) -> tuple:
+    """The joint variables as real sympy symbols: default q1 … qn; names must be distinct."""
+    if names is None:
+        names = [f"q{i + 1}" for i in range(n)]
+    if isinstance(names, (str, bytes, dict)) or not hasattr(names, "__iter__"):
+        raise DHLabError(f"joint_symbols must be a list of {n} names, e.g. {[f'q{i + 1}' for i in range(n)]}; "
+                         f"got {describe(names)}.")
+    names = list(names)
+    if len(names) != n:
+        raise DHLabError(f"joint_symbols must name {n} joints, got {len(names)}: {describe(names)}.")
+    text = []
+    for k, s in enumerate(names):
+        if isinstance(s, sp.Symbol):
+            s = s.name
+        if not isinstance(s, str) or not s.isidentifier():
+            raise DHLabError(f"joint_symbols[{k}] must be a name such as 'q{k + 1}' or 'theta{k + 1}', "
+                             f"got {describe(s)}.")
+        text.append(s)
+    repeated = sorted({s for s in text if text.count(s) > 1})
+    if repeated:
+        raise DHLabError(f"joint_symbols name {repeated[0]!r} twice: every joint needs its own variable, "
+                         "or two joints would merge into one in fk_sym().")
+    return tuple(sp.Symbol(s, real=True) for s in text)
+
+
+def _one_value(q, i: int):
+    """A joint value given as a one-element array, or a clear error."""
+    arr = np.asarray(q, dtype=object).ravel() if isinstance(q, (list, tuple, np.ndarray)) else None
+    if arr is None or arr.size != 1:
+        raise DHLabError(f"q must be one number, the value of joint {i}, got {describe(q)}.")
+    return arr[0]
+
+
 def _numeric_params(params) -> dict:
     """Robot parameters as {name: float}, refusing anything that is not a finite number."""
+    if params is None:
+        return {}
+    if not isinstance(params, dict):
+        raise DHLabError(f"params must be a dict of numbers, e.g. {{'l1': 0.7}}; got {describe(params)}.")
     out = {}
-    for key, value in dict(params or {}).items():
-        try:
-            number = float(value)
-        except (TypeError, ValueError):
-            number = float("nan")
-        if not np.isfinite(number):
-            raise DHLabError(f"parameter {key} = {value!r} must be a finite number (a length or an angle in radians).")
-        out[str(key)] = number
+    for key, value in params.items():
+        name = key.name if isinstance(key, sp.Symbol) else key
+        if not isinstance(name, str) or not name.isidentifier():
+            raise DHLabError(f"params keys must be names such as 'l1', got {describe(key)}.")
+        if isinstance(value, sp.Basic) and value.free_symbols or isinstance(value, str):
+            raise DHLabError(f"parameter {name} = {value!r} must be a finite number "
+                             "(a length or an angle in radians).")
+        out[name] = as_number(value, f"parameter {name}")
     return out
 
 

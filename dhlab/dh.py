@@ -25,43 +25,32 @@ import re
 import numpy as np
 import sympy as sp
 
-from .chain import Link, Move, Robot, Rot
+from .chain import Link, Move, Robot, Rot, _link_list, _numeric_params
 from .symbolic import exact_angle, exact_length
 from .table import DHTable
 from .transforms import Rx, Rz
-from .units import is_angle
-from .validation import DHLabError, FULL_TURN
+from .units import Angle
+from .units import has_angle_mark
+from .validation import DHLabError, as_angle, as_choice, as_length, as_number, describe
 
 __all__ = ["RevoluteDH", "PrismaticDH", "DHRobot"]
 
 
 def _check_angle_param(value, name: str):
-    if isinstance(value, sp.Basic):
-        return value
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise DHLabError(f"{name} must be a number of radians or a sympy expression, got {value!r}.") from None
-    if not np.isfinite(v) or abs(v) > FULL_TURN + 1e-9:
-        raise DHLabError(
-            f"{name} = {v:g} is not an angle in radians (more than a full turn, or not finite). "
-            f"Angles are radians: for {v:g} degrees write dhlab.deg({v:g})."
-        )
-    return value
+    """A DH angle (θ, α, offset): radians or a sympy expression; kept as given (deg() keeps its mark)."""
+    if isinstance(value, str):
+        raise DHLabError(f"{name} = {value!r} is text: pass a number of radians (e.g. dhlab.deg(90)) or a "
+                         "sympy expression. Tables typed as text go through DHRobot.from_table.")
+    checked = as_angle(value, name, symbolic=True)
+    return checked if isinstance(checked, sp.Basic) or not isinstance(value, Angle) else value
 
 
 def _check_length_param(value, name: str):
-    if isinstance(value, sp.Basic):
-        return value
-    if is_angle(value):
-        raise DHLabError(f"{name} is a length, but you gave an angle ({value!r}): pass a plain number.")
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise DHLabError(f"{name} must be a number (a length) or a sympy expression, got {value!r}.") from None
-    if not np.isfinite(v):
-        raise DHLabError(f"{name} is {v}: it must be a finite length.")
-    return value
+    """A DH length (d, a, offset): a number or a sympy expression, never a deg() value."""
+    if isinstance(value, str):
+        raise DHLabError(f"{name} = {value!r} is text: pass a number or a sympy symbol, e.g. sympy.Symbol({value!r}) "
+                         "with its value in the robot's params. Tables typed as text go through DHRobot.from_table.")
+    return as_length(value, name, symbolic=True)
 
 
 class DHLink(Link):
@@ -105,13 +94,8 @@ class DHRobot(Robot):
 
     def __init__(self, links, name: str = "robot", base=None, tool=None,
                  params=None, joint_symbols=None, unit: str = ""):
-        links = list(links)
-        for i, link in enumerate(links):
-            if not isinstance(link, DHLink):
-                raise DHLabError(
-                    f"link {i + 1} of a DHRobot must be RevoluteDH(...) or PrismaticDH(...), got "
-                    f"{type(link).__name__}. For other products of motions use dhlab.Robot."
-                )
+        links = _link_list(links, DHLink, "RevoluteDH(...) or PrismaticDH(...) (for other products of "
+                                          "motions use dhlab.Robot)")
         super().__init__(links, name=name, base=base, tool=tool, params=params,
                          joint_symbols=joint_symbols, unit=unit)
 
@@ -161,46 +145,93 @@ class DHRobot(Robot):
         ``params`` gives the numbers of the other symbols, e.g. ``{"l1": 1}``;
         ``qlim`` one (low, high) per row, in the table's angle unit for revolute joints.
         """
-        if angles not in ("deg", "rad"):
-            raise DHLabError(f"angles must be 'deg' or 'rad', got {angles!r}.")
-        params = dict(params or {})
+        angles = as_choice(angles, ("deg", "rad"), "angles")
+        params = _numeric_params(params)
+        rows = _rows(rows)
+        limits_per_row = _table_qlim(qlim, len(rows))
+        to_rad = (lambda e: e * sp.pi / 180) if angles == "deg" else (lambda e: e)
         links, symbols = [], []
         for i, row in enumerate(rows, start=1):
-            if len(row) != 4:
-                raise DHLabError(f"row {i} must have 4 entries (θ, d, a, α), got {len(row)}: {row!r}.")
-            theta, d, a, alpha = (_parse(v, f"row {i}") for v in row)
-            limits = None if qlim is None else tuple(qlim[i - 1])
-            to_rad = (lambda e: e * sp.pi / 180) if angles == "deg" else (lambda e: e)
+            theta, d, a, alpha = (_parse(v, f"row {i}, {col}", col in "θα" and angles == "deg")
+                                  for v, col in zip(row, "θdaα"))
+            limits = limits_per_row[i - 1]
             q = _joint_symbol(theta, params)
             if q is not None:
                 offset = to_rad(_offset(theta, q, f"row {i}, θ"))
                 if limits is not None and angles == "deg":
-                    limits = tuple(np.radians(limits))
+                    limits = _degrees_to_radians(limits, f"qlim[{i - 1}] (row {i}, degrees)")
                 links.append(RevoluteDH(d=d, a=a, alpha=to_rad(alpha), offset=offset, qlim=limits))
             else:
                 q = _joint_symbol(d, params)
                 if q is None:
                     raise DHLabError(
                         f"row {i} {row!r} has no joint variable: θ (revolute) or d (prismatic) must "
-                        "contain a symbol such as q{i} that params does not give a value."
+                        f"contain a symbol such as q{i} that params does not give a value."
                     )
                 links.append(PrismaticDH(theta=to_rad(theta), a=a, alpha=to_rad(alpha),
                                          offset=_offset(d, q, f"row {i}, d"), qlim=limits))
+            if str(q) in symbols:
+                raise DHLabError(f"rows {symbols.index(str(q)) + 1} and {i} both use {q} as their joint variable: "
+                                 "every joint needs its own (q1, q2, …).")
             symbols.append(str(q))
         return cls(links, name=name, params=params, joint_symbols=symbols, **kwargs)
 
 
-def _parse(value, where: str):
-    if isinstance(value, (int, float, np.integer, np.floating)):
-        return sp.nsimplify(value) if float(value).is_integer() else sp.Float(float(value))
+def _rows(rows) -> list:
+    """The table as a list of rows of 4 entries, or a clear error."""
+    example = "[('q1', 0, 1, 0), ('q2', 0, 0.5, 0)]"
+    if isinstance(rows, (str, bytes, dict)) or not hasattr(rows, "__iter__"):
+        raise DHLabError(f"the table must be a list of rows (θ, d, a, α), e.g. {example}; got {describe(rows)}.")
+    rows = list(rows)
+    if not rows:
+        raise DHLabError(f"the table is empty: give one row (θ, d, a, α) per joint, e.g. {example}.")
+    for i, row in enumerate(rows, start=1):
+        if isinstance(row, (str, bytes, dict)) or not hasattr(row, "__len__") or len(row) != 4:
+            count = len(row) if hasattr(row, "__len__") and not isinstance(row, (str, bytes)) else "not 4"
+            raise DHLabError(f"row {i} must have 4 entries (θ, d, a, α), got {count}: {describe(row)}.")
+    return rows
+
+
+def _table_qlim(qlim, n: int) -> list:
+    if qlim is None:
+        return [None] * n
+    if isinstance(qlim, (str, bytes, dict)) or not hasattr(qlim, "__len__") or len(qlim) != n:
+        raise DHLabError(f"qlim must give one (low, high) per row ({n} rows), got {describe(qlim)}.")
+    return list(qlim)
+
+
+def _degrees_to_radians(limits, name: str) -> tuple:
+    """A revolute joint's limits typed in degrees, as radians (a deg() value here is ambiguous)."""
+    if has_angle_mark(limits):
+        raise DHLabError(f"{name}: the table's angles are degrees, so write the limits as plain degrees "
+                         f"(e.g. (-90, 90)), not with deg(); got {describe(limits)}.")
+    if isinstance(limits, (str, bytes, dict)) or not hasattr(limits, "__len__") or len(limits) != 2:
+        raise DHLabError(f"{name} must be two numbers (low, high), got {describe(limits)}.")
+    return tuple(float(v) for v in np.radians([as_number(v, name) for v in limits]))
+
+
+_TEXT = re.compile(r"[\w\s+\-*/().]*")
+
+
+def _parse(value, where: str, degrees: bool = False):
+    """A table entry as a sympy number or expression, checked (finite, real)."""
+    if degrees and has_angle_mark(value):
+        raise DHLabError(f"{where} = {value!r} is already in radians (made by deg()), but this table's "
+                         "angles are degrees: write the plain number of degrees (e.g. 90), or pass angles='rad'.")
+    if isinstance(value, str):
+        text = value.replace("θ", "theta").replace("−", "-").replace("°", "").replace("º", "")
+        text = re.sub(r"\s+", " ", text).strip()
+        if not text or not _TEXT.fullmatch(text) or "__" in text:
+            raise DHLabError(f"{where}: cannot read {value!r} as a number or an expression like 'q2 + 90'.")
+        names = {n: sp.Symbol(n) for n in re.findall(r"[A-Za-z_]\w*", text) if n != "pi"}
+        try:
+            value = sp.sympify(text, locals=names)
+        except (sp.SympifyError, SyntaxError, TypeError, ValueError, AttributeError, ZeroDivisionError):
+            raise DHLabError(f"{where}: cannot read {value!r} as a number or an expression like 'q2 + 90'.") from None
     if isinstance(value, sp.Basic):
-        return value
-    text = str(value).replace("θ", "theta").replace("−", "-").replace("°", "").replace("º", "")
-    text = re.sub(r"\s+", " ", text).strip()
-    try:
-        return sp.sympify(text, locals={name: sp.Symbol(name) for name in re.findall(r"[A-Za-z_]\w*", text)})
-    except (sp.SympifyError, SyntaxError, TypeError):
-        raise DHLabError(f"{where}: cannot read {value!r} as a number or an expression like 'q2 + 90'.") from None
+        return as_number(value, where, symbolic=True)
+    number = as_number(value, where)
+    return sp.nsimplify(number) if number.is_integer() else sp.Float(number)
 
 
 def _joint_symbol(expr, params):

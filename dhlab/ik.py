@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-from .validation import DHLabError
+from .validation import DHLabError, as_length, as_tolerance, describe
 
 __all__ = ["pr_mechanism_ik", "pr_mechanism_ik_explained", "IKSolutions"]
 
@@ -32,24 +32,44 @@ class IKSolutions(list):
 
 
 def _lengths(robot_or_params):
-    params = getattr(robot_or_params, "params", robot_or_params)
-    try:
-        l1, l2 = float(params["l1"]), float(params["l2"])
-    except (KeyError, TypeError, ValueError):
-        raise DHLabError("pass the P-R mechanism (dhlab.robots.pr_mechanism()) or a dict "
-                         "{'l1': ..., 'l2': ...} with its two lengths.") from None
+    """(l1, l2) of the P-R mechanism, from the robot itself or a dict of its two lengths."""
+    if isinstance(robot_or_params, dict):
+        if set(robot_or_params) != {"l1", "l2"}:
+            raise DHLabError("pass the P-R mechanism (dhlab.robots.pr_mechanism()) or a dict "
+                             f"{{'l1': ..., 'l2': ...}} with its two lengths; got {describe(robot_or_params)}.")
+        l1, l2 = (as_length(robot_or_params[k], k) for k in ("l1", "l2"))
+    elif _is_pr_mechanism(robot_or_params):
+        l1, l2 = robot_or_params.params["l1"], robot_or_params.params["l2"]
+    else:
+        raise DHLabError("pr_mechanism_ik solves seed 003's P-R mechanism only: pass "
+                         "dhlab.robots.pr_mechanism() (any lengths) or a dict {'l1': ..., 'l2': ...}; "
+                         f"got {describe(robot_or_params)}.")
     if l2 <= 0:
         raise DHLabError(f"l2 = {l2} must be a positive length (the rotating arm).")
     return l1, l2
 
 
+def _is_pr_mechanism(robot) -> bool:
+    """True for a robot with exactly the P-R structure Tr(q1 + l1, 0, 0)·Rz(q2)·Tr(l2, 0, 0), no base or tool."""
+    numeric = getattr(robot, "_numeric", None)
+    params = getattr(robot, "params", None)
+    if numeric is None or not isinstance(params, dict) or not {"l1", "l2"} <= set(params):
+        return False
+    shape = [[(kind, axis, joint, sign) for kind, axis, _, joint, sign in link] for link in numeric]
+    return (shape == [[("T", 0, True, 1)], [("R", 2, True, 1), ("T", 0, False, 1)]]
+            and numeric[0][0][2] == params["l1"] and numeric[1][0][2] == 0 and numeric[1][1][2] == params["l2"]
+            and np.array_equal(robot.base, np.eye(4)) and np.array_equal(robot.tool, np.eye(4)))
+
+
 def pr_mechanism_ik(robot_or_params, x: float, y: float, tol: float = 1e-12) -> IKSolutions:
-    """All solutions (q1, q2) reaching (x, y): 2, 1 (|y| = l2) or 0 (|y| > l2), branch A first."""
+    """All solutions (q1, q2) reaching (x, y): 2, 1 (|y| = l2) or 0 (|y| > l2), branch A first.
+
+    ``tol`` (relative, 0 ≤ tol ≤ 1e-2) decides when |y| = l2 counts as the boundary.
+    """
     l1, l2 = _lengths(robot_or_params)
-    for name, v in (("x", x), ("y", y)):
-        if not math.isfinite(float(v)):
-            raise DHLabError(f"target {name} = {v} must be a finite number.")
-    ratio = float(y) / l2
+    x, y = as_length(x, "target x"), as_length(y, "target y")
+    tol = as_tolerance(tol, "tol", upper=1e-2, zero=True)
+    ratio = y / l2
     if abs(ratio) > 1 + tol:
         return IKSolutions([], f"no solution: |y| = {abs(y):g} > l2 = {l2:g}, the arm cannot reach "
                                f"that height (the point is outside the workspace, |y| ≤ l2).")

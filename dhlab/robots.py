@@ -16,6 +16,7 @@ import sympy as sp
 
 from .chain import Link, Move, Robot, Rot
 from .dh import DHRobot
+from .validation import as_flag
 
 __all__ = [
     "robot_no_tan_elemental_1", "robot_no_tan_elemental_2", "pr_mechanism",
@@ -131,7 +132,7 @@ def puma560(floor: bool = False) -> DHRobot:
     """The PUMA 560 in standard DH, as P. Corke's ``mdl_puma560`` (metres): frame 0 at the
     shoulder (d1 = 0). ``floor=True`` gives the Python Robotics Toolbox variant, with frame 0
     on the floor under the pedestal (d1 = 0.67183 m): every pose 0.67183 m higher."""
-    d1 = 0.67183 if floor else 0
+    d1 = 0.67183 if as_flag(floor, "floor") else 0
     rows = [("q1", d1, 0, 90), ("q2", 0, 0.4318, 0), ("q3", 0.15005, 0.0203, -90),
             ("q4", 0.4318, 0, 90), ("q5", 0, 0, -90), ("q6", 0, 0, 0)]
     return DHRobot.from_table(rows, name="PUMA 560", qlim=PUMA_QLIM_DEG, unit="m")

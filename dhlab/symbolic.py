@@ -21,12 +21,14 @@ Matrix([[C12, S1]])
 from __future__ import annotations
 
 import math
+import time
 from fractions import Fraction
 
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
-__all__ = ["exact", "exact_angle", "exact_length", "simplify_chain", "compact", "legend", "count_ops"]
+__all__ = ["exact", "exact_angle", "exact_length", "chain_product", "simplify_chain", "compact", "legend",
+           "count_ops", "tree_size"]
 
 GREEK = {"theta": "θ", "alpha": "α", "phi": "φ", "psi": "ψ", "beta": "β", "gamma": "γ"}
 _NICE = [(sp.Integer(0), 0.0), (sp.Integer(1), 1.0), (sp.Rational(1, 2), 0.5),
@@ -83,28 +85,74 @@ def _joint_trig(expr, q_symbols) -> set:
     return {f for f in expr.atoms(sp.cos, sp.sin) if f.free_symbols & qs}
 
 
-def simplify_chain(blocks, base, tool, q_symbols, sum_angles: bool = False):
+def chain_product(matrices, deadline=None):
+    """The product of sympy matrices, in order, as multiplied (entries not expanded).
+
+    Written entry by entry, ``Σ_k T[i,k]·A[k,j]`` skipping the zeros: sympy
+    expressions share their common parts, so a 12-joint chain takes a fraction of
+    a second (``sympy.Matrix.__mul__`` checks and simplifies every dot product,
+    which costs minutes on long chains). ``deadline``: see :func:`simplify_chain`.
+    """
+    T = matrices[0]
+    for A in matrices[1:]:
+        _check_time(deadline)
+        T = sp.Matrix(T.rows, A.cols, lambda i, j: sp.Add(
+            *[T[i, k] * A[k, j] for k in range(T.cols) if T[i, k] != 0 and A[k, j] != 0]))
+    return T
+
+
+def _deadline(timeout):
+    """The ``time.monotonic()`` instant at which work with this timeout (seconds) must stop."""
+    return None if timeout is None else time.monotonic() + timeout
+
+
+def _check_time(deadline):
+    if deadline is not None and time.monotonic() > deadline:
+        from .validation import DHLabError
+        raise DHLabError(
+            "fk_sym(simplify=True) stopped: it ran out of time (the timeout option, in seconds). "
+            "Pass a larger timeout (or timeout=None for no limit), use simplify=False, which is fast "
+            "for any chain, or work numerically with robot.fk(q)."
+        )
+
+
+def tree_size(e, _memo=None) -> int:
+    """How many nodes ``e`` has written out as a tree (shared parts counted each time),
+    computed in time proportional to its distinct parts."""
+    memo = {} if _memo is None else _memo
+    key = id(e)
+    if key not in memo:
+        memo[key] = 1 + sum(tree_size(a, memo) for a in e.args)
+    return memo[key]
+
+
+EXPAND_LIMIT = 20_000   # entries larger than this (as a tree) are left as multiplied
+
+
+def simplify_chain(blocks, base, tool, q_symbols, sum_angles: bool = False, timeout=None):
     """Compact product ``base · blocks[0] ··· blocks[-1] · tool`` (sympy matrices).
 
     The blocks should already carry the sums of angles of parallel joints (so
     each cos/sin of a joint angle appears in one block only); the product is
-    then formed on plain symbols and each entry laid out in its shortest form.
-    ``sum_angles=True`` also collapses ``C1·C2 − S1·S2`` into ``C12`` afterwards,
-    with sympy's targeted rule TR10i: for small chains not written in DH form.
+    then formed and each entry laid out in its shortest form. ``sum_angles=True``
+    also collapses ``C1·C2 − S1·S2`` into ``C12`` afterwards, with sympy's targeted
+    rule TR10i: for small chains not written in DH form.
+
+    Long general chains have entries with hundreds of thousands of terms once
+    expanded: an entry larger than ``EXPAND_LIMIT`` nodes stays as multiplied
+    (already its shortest form). After ``timeout`` seconds (None: no limit) a
+    DHLabError stops the work; the kernel's stop button always works too.
     """
-    trig = set()
-    for B in blocks:
-        for e in B:
-            trig |= _joint_trig(e, q_symbols)
-    placeholder = {f: sp.Dummy() for f in sorted(trig, key=sp.default_sort_key)}
-    back = {v: k for k, v in placeholder.items()}
-    T = base
-    for B in blocks:
-        T = T * B.xreplace(placeholder)
-    T = (T * tool).xreplace(back)
-    if sum_angles:
-        T = T.applyfunc(lambda e: TR10i(sp.expand(e)))
-    return T.applyfunc(_shortest)
+    deadline = _deadline(timeout)
+    T = chain_product([base] + list(blocks) + [tool], deadline)
+    memo = {}
+    out = []
+    for e in T:
+        _check_time(deadline)
+        if tree_size(e, memo) <= EXPAND_LIMIT:
+            e = _shortest(TR10i(sp.expand(e)) if sum_angles else e)
+        out.append(e)
+    return sp.Matrix(T.rows, T.cols, out)
 
 
 def _shortest(e):
@@ -131,13 +179,39 @@ def _compact_name(f, q_symbols):
     return ("C" if isinstance(f, sp.cos) else "S") + joiner.join(labels)
 
 
+def _joint_arguments(M, q_symbols, who: str):
+    """``M`` as a sympy object and the joint symbols as the symbols of ``M`` (names accepted)."""
+    from .validation import DHLabError, describe
+    if isinstance(M, (str, bytes)) or isinstance(M, bool):
+        raise DHLabError(f"{who}: M must be a sympy Matrix or expression (e.g. robot.fk_sym()), got {describe(M)}.")
+    try:
+        M = sp.Matrix(M) if isinstance(M, (list, tuple)) else sp.sympify(M, strict=True)
+    except (sp.SympifyError, TypeError, ValueError):
+        raise DHLabError(f"{who}: M must be a sympy Matrix or expression (e.g. robot.fk_sym()), "
+                         f"got {describe(M)}.") from None
+    if not isinstance(M, (sp.Expr, sp.MatrixBase)):
+        raise DHLabError(f"{who}: M must be a sympy Matrix or expression, got {describe(M)}.")
+    q_symbols = list(q_symbols) if isinstance(q_symbols, (list, tuple)) else [q_symbols]
+    by_name = {s.name: s for s in M.free_symbols if isinstance(s, sp.Symbol)}
+    out = []
+    for q in q_symbols:
+        name = q.name if isinstance(q, sp.Symbol) else q
+        if not isinstance(name, str):
+            raise DHLabError(f"{who}: the joint variables must be symbols or names such as 'q1', got {describe(q)}.")
+        out.append(by_name.get(name, sp.Symbol(name)))      # absent from M: harmless
+    if by_name and not set(out) & set(by_name.values()):
+        raise DHLabError(f"{who}: none of the joint variables {[str(q) for q in out]} appears in M (its symbols "
+                         f"are {sorted(by_name)}): pass the robot's joint symbols, e.g. robot.q_symbols.")
+    return M, tuple(out)
+
+
 def compact(M, q_symbols):
     """Replace cos/sin of (sums of) joint variables by the slides' C1, S23, C345 ….
 
-    The result is for reading: its symbols are names, not functions.
+    The result is for reading: its symbols are names, not functions. The joint
+    variables may be given as symbols or by name (``['q1', 'q2']``).
     """
-    q_symbols = tuple(q_symbols)
-    M = sp.sympify(M)
+    M, q_symbols = _joint_arguments(M, q_symbols, "compact")
     atoms = set()
     for e in (M if isinstance(M, sp.MatrixBase) else [M]):
         atoms |= _joint_trig(e, q_symbols)
@@ -147,10 +221,10 @@ def compact(M, q_symbols):
 
 def legend(M, q_symbols) -> str:
     """The definitions behind :func:`compact`'s names, e.g. 'C1 = cos(q1), S23 = sin(q2 + q3)'."""
-    q_symbols = tuple(q_symbols)
+    M, q_symbols = _joint_arguments(M, q_symbols, "legend")
     atoms = set()
     for e in (M if isinstance(M, sp.MatrixBase) else [M]):
-        atoms |= _joint_trig(sp.sympify(e), q_symbols)
+        atoms |= _joint_trig(e, q_symbols)
     named = sorted(((_compact_name(f, q_symbols), f) for f in atoms if _compact_name(f, q_symbols)),
                    key=lambda t: (len(t[0]), t[0][1:], t[0][0]))
     return ", ".join(f"{n} = {_greek(str(f))}" for n, f in named)

@@ -47,6 +47,11 @@ class DHTable:
     header = ("i", "θ", "d", "a", "α", "joint")
 
     def __init__(self, robot):
+        if not all(hasattr(robot, name) for name in ("links", "joint_labels", "name")) or \
+                not all(hasattr(link, "alpha") for link in getattr(robot, "links", [None])):
+            from .validation import DHLabError, describe   # (validation does not import this module)
+            raise DHLabError(f"DHTable shows the table of a DHRobot (e.g. DHTable(dhlab.robots.puma560()), "
+                             f"or robot.table()); got {describe(robot)}.")
         self.robot = robot
         self.rows = [self._row(i, link, label) for i, (link, label)
                      in enumerate(zip(robot.links, robot.joint_labels), start=1)]

@@ -31,7 +31,8 @@ import math
 import numpy as np
 import sympy as sp
 
-from .validation import DHLabError, FULL_TURN, as_float_array, as_matrix4, rigid_problem
+from .validation import (DHLabError, as_angle, as_length, as_matrix4, as_sym_matrix4,
+                         as_tolerance, rigid_problem)
 
 __all__ = [
     "Rx", "Ry", "Rz", "trans", "Tr", "Tz", "Tx", "dh_matrix",
@@ -40,36 +41,26 @@ __all__ = [
 
 
 def _symbolic(*args) -> bool:
+    """True when any argument is a sympy value (then the result is a sympy Matrix)."""
     return any(isinstance(a, sp.Basic) for a in args)
 
 
-def _angle(value, name: str) -> float:
-    value = as_float_array(value, name)
-    if value.ndim != 0:
-        raise DHLabError(f"{name} must be one number (radians), got shape {value.shape}.")
-    if not np.isfinite(value):
-        raise DHLabError(f"{name} is {float(value)}: it must be a finite number of radians.")
-    if abs(value) > FULL_TURN + 1e-9:
-        raise DHLabError(
-            f"{name} = {float(value):g} rad is more than a full turn: angles are in radians. "
-            f"If you meant {float(value):g} degrees, pass dhlab.deg({float(value):g})."
-        )
-    return float(value)
+def _angle(value, name: str):
+    """A checked angle: a float, or a sympy value (exact numbers stay exact)."""
+    return as_angle(value, name, symbolic=True)
 
 
-def _length(value, name: str) -> float:
-    value = as_float_array(value, name)
-    if value.ndim != 0 or not np.isfinite(value):
-        raise DHLabError(f"{name} must be one finite number (a length), got {value!r}.")
-    return float(value)
+def _length(value, name: str):
+    """A checked length: a float, or a sympy value."""
+    return as_length(value, name, symbolic=True)
 
 
-def _rotation(axis: int, angle):
+def _rotation(axis: int, angle, name: str = "angle"):
     """4x4 rotation about the x (0), y (1) or z (2) axis."""
+    angle = _angle(angle, name)
     if _symbolic(angle):
         c, s, M = sp.cos(angle), sp.sin(angle), sp.eye(4)
     else:
-        angle = _angle(angle, "angle")
         c, s, M = math.cos(angle), math.sin(angle), np.eye(4)
     i, j = (axis + 1) % 3, (axis + 2) % 3   # the plane the rotation turns
     M[i, i], M[i, j] = c, -s
@@ -79,27 +70,28 @@ def _rotation(axis: int, angle):
 
 def Rx(alpha):
     """Rotation by ``alpha`` (radians) about x."""
-    return _rotation(0, alpha)
+    return _rotation(0, alpha, "alpha")
 
 
 def Ry(beta):
     """Rotation by ``beta`` (radians) about y."""
-    return _rotation(1, beta)
+    return _rotation(1, beta, "beta")
 
 
 def Rz(theta):
     """Rotation by ``theta`` (radians) about z."""
-    return _rotation(2, theta)
+    return _rotation(2, theta, "theta")
 
 
 def trans(x=0, y=0, z=0):
     """Pure translation by (x, y, z)."""
+    x, y, z = (_length(v, n) for v, n in ((x, "x"), (y, "y"), (z, "z")))
     if _symbolic(x, y, z):
         M = sp.eye(4)
         M[0, 3], M[1, 3], M[2, 3] = x, y, z
         return M
     M = np.eye(4)
-    M[:3, 3] = [_length(v, n) for v, n in ((x, "x"), (y, "y"), (z, "z"))]
+    M[:3, 3] = x, y, z
     return M
 
 
@@ -108,11 +100,13 @@ Tr = trans  # the seeds' name: Tr(x, y, z) / Tras(x, y, z)
 
 def Tz(theta, z):
     """Seed 000's ``Tz[θ, z] = Rz(θ)·Tr(0, 0, z)``: turn about z, slide along z (they commute)."""
+    theta, z = _angle(theta, "theta"), _length(z, "z")
     return Rz(theta) @ trans(0, 0, z) if not _symbolic(theta, z) else Rz(theta) * trans(0, 0, z)
 
 
 def Tx(alpha, x):
     """Seed 000's ``Tx[α, x] = Tr(x, 0, 0)·Rx(α)``: slide along x, turn about x (they commute)."""
+    alpha, x = _angle(alpha, "alpha"), _length(x, "x")
     return trans(x, 0, 0) @ Rx(alpha) if not _symbolic(alpha, x) else trans(x, 0, 0) * Rx(alpha)
 
 
@@ -124,6 +118,8 @@ def dh_matrix(theta, d, a, alpha):
     >>> dh_matrix(th, d, a, al)[0, :]
     Matrix([[cos(theta), -sin(theta)*cos(alpha), sin(alpha)*sin(theta), a*cos(theta)]])
     """
+    theta, alpha = _angle(theta, "theta"), _angle(alpha, "alpha")
+    d, a = _length(d, "d"), _length(a, "a")
     if _symbolic(theta, d, a, alpha):
         return Tz(theta, d) * Tx(alpha, a)
     return Tz(theta, d) @ Tx(alpha, a)
@@ -131,27 +127,29 @@ def dh_matrix(theta, d, a, alpha):
 
 def rotation(T):
     """The 3x3 rotation block of a homogeneous matrix."""
-    return T[:3, :3]
+    return _any_matrix4(T)[:3, :3]
 
 
 def position(T):
     """The position (translation column) of a homogeneous matrix."""
-    return T[:3, 3]
+    return _any_matrix4(T)[:3, 3]
+
+
+def _any_matrix4(T, name: str = "T"):
+    """A 4x4 as it came: a sympy Matrix (checked) or a float array."""
+    return as_sym_matrix4(T, name) if isinstance(T, sp.MatrixBase) else as_matrix4(T, name)
 
 
 def is_rigid(T, tol: float = 1e-9) -> bool:
     """True when the 4x4 ``T`` is a proper rigid transform:
     orthonormal rotation, det R = +1, last row (0, 0, 0, 1)."""
+    tol = as_tolerance(tol, "tol", upper=0.1)
     return rigid_problem(as_matrix4(T), tol) is None
 
 
 def check_rigid(T, name: str = "T", tol: float = 1e-9) -> np.ndarray:
     """Return ``T`` as a float array, or raise DHLabError saying what is wrong with it."""
-    if isinstance(T, sp.MatrixBase):
-        if T.free_symbols:
-            raise DHLabError(f"{name} has symbols {sorted(map(str, T.free_symbols))}: "
-                             "substitute numbers before checking it numerically.")
-        T = np.array(T.evalf(), dtype=float)
+    tol = as_tolerance(tol, "tol", upper=0.1)
     T = as_matrix4(T, name)
     problem = rigid_problem(T, tol)
     if problem:
@@ -170,6 +168,12 @@ def inv(T):
     True
     """
     if isinstance(T, sp.MatrixBase):
+        T = as_sym_matrix4(T, "T")
+        if not T.free_symbols:
+            check_rigid(T, "T")            # a numeric sympy matrix must be rigid, as a numpy one
+        elif T[3, :] != sp.Matrix([[0, 0, 0, 1]]):
+            raise DHLabError(f"T is not a homogeneous transform: its last row is {T[3, :].tolist()[0]}, "
+                             "not [0, 0, 0, 1]. inv() uses the structure [Rᵀ, −Rᵀp] of a rigid transform.")
         R, p = T[:3, :3], T[:3, 3]
         out = sp.eye(4)
         out[:3, :3] = R.T

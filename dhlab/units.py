@@ -2,21 +2,30 @@
 
 ``deg(30)`` converts degrees to radians *and remembers that the value is an
 angle*, so that passing it to a prismatic joint (which expects a length) is
-caught instead of silently moving the joint by 0.52 length units.
+caught instead of silently moving the joint by 0.52 length units. The mark
+survives the arithmetic of angles: ``-deg(30)``, ``2 * deg(30)``,
+``deg(30) + 0.1`` are angles too.
 
 >>> from dhlab import deg, rad
 >>> round(deg(90), 6)
 1.570796
 >>> rad(deg(45))
 45.0
+>>> -deg(30)
+deg(-30)
 """
 from __future__ import annotations
 
 import math
 
 import numpy as np
+import sympy as sp
 
-__all__ = ["deg", "rad", "Angle", "AngleArray", "is_angle"]
+__all__ = ["deg", "rad", "Angle", "AngleArray", "is_angle", "has_angle_mark"]
+
+
+def _is_real_scalar(x) -> bool:
+    return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, (bool, np.bool_))
 
 
 class Angle(float):
@@ -25,36 +34,101 @@ class Angle(float):
     def __repr__(self) -> str:
         return f"deg({math.degrees(self):g})"
 
+    # the arithmetic of angles keeps the mark: -θ, 2θ, θ/2, θ ± a number
+    def __neg__(self):
+        return Angle(-float(self))
+
+    def __pos__(self):
+        return self
+
+    def __abs__(self):
+        return Angle(abs(float(self)))
+
+    def _keep(self, value, other):
+        return Angle(value) if _is_real_scalar(other) and isinstance(value, float) else value
+
+    def __add__(self, other):
+        return self._keep(float.__add__(self, other), other)
+
+    __radd__ = __add__
+
+    def __sub__(self, other):
+        return self._keep(float.__sub__(self, other), other)
+
+    def __rsub__(self, other):
+        return self._keep(float.__rsub__(self, other), other)
+
+    def __mul__(self, other):
+        return float.__mul__(self, other) if isinstance(other, Angle) else self._keep(float.__mul__(self, other), other)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other):
+        value = float.__truediv__(self, other)
+        return value if isinstance(other, Angle) else self._keep(value, other)
+
 
 class AngleArray(np.ndarray):
     """An array in radians that was made from degrees by :func:`deg`."""
 
-    def __array_finalize__(self, obj):  # keep the subclass through views only
+    def __array_finalize__(self, obj):  # keep the subclass through views and arithmetic
         pass
-
-
-def deg(x):
-    """Degrees -> radians. Scalars give an :class:`Angle`, sequences an :class:`AngleArray`.
-
-    >>> deg([0, 90, 180]).round(4).tolist()
-    [0.0, 1.5708, 3.1416]
-    """
-    if np.ndim(x) == 0:
-        return Angle(math.radians(float(x)))
-    return np.radians(np.asarray(x, dtype=float)).view(AngleArray)
-
-
-def rad(x):
-    """Radians -> degrees (plain floats or arrays: the inverse of :func:`deg`).
-
-    >>> rad(np.pi)
-    180.0
-    """
-    if np.ndim(x) == 0:
-        return math.degrees(float(x))
-    return np.degrees(np.asarray(x, dtype=float))
 
 
 def is_angle(x) -> bool:
     """True when ``x`` was made by :func:`deg` (so it is an angle, not a length)."""
     return isinstance(x, (Angle, AngleArray))
+
+
+def has_angle_mark(x) -> bool:
+    """True when ``x`` or anything inside it (lists, tuples, object arrays) was made by :func:`deg`."""
+    if isinstance(x, (Angle, AngleArray)):
+        return True
+    if isinstance(x, (list, tuple)):
+        return any(has_angle_mark(v) for v in x)
+    if isinstance(x, np.ndarray) and x.dtype == object:
+        return any(has_angle_mark(v) for v in x.ravel())
+    return False
+
+
+def _error(message):
+    from .validation import DHLabError     # (validation imports this module)
+    return DHLabError(message)
+
+
+def _degrees_in(x, what: str):
+    """``x`` checked to be real numbers (a number or a rectangular array), as floats."""
+    from .validation import as_float_array, as_number
+    if isinstance(x, (list, tuple, np.ndarray, sp.MatrixBase)):
+        return as_float_array(x, what, finite=True)
+    return np.array(as_number(x, what))
+
+
+def deg(x):
+    """Degrees -> radians. Scalars give an :class:`Angle`, sequences an :class:`AngleArray`;
+    a sympy expression with symbols gives the exact ``x·π/180``.
+
+    >>> deg([0, 90, 180]).round(4).tolist()
+    [0.0, 1.5708, 3.1416]
+    """
+    if isinstance(x, sp.Expr) and x.free_symbols:
+        return x * sp.pi / 180
+    values = _degrees_in(x, "deg(x): x (degrees)")
+    if values.ndim == 0:
+        return Angle(math.radians(float(values)))
+    return np.radians(values).view(AngleArray)
+
+
+def rad(x):
+    """Radians -> degrees (plain floats or arrays: the inverse of :func:`deg`);
+    a sympy expression with symbols gives the exact ``x·180/π``.
+
+    >>> rad(np.pi)
+    180.0
+    """
+    if isinstance(x, sp.Expr) and x.free_symbols:
+        return x * 180 / sp.pi
+    values = _degrees_in(x, "rad(x): x (radians)")
+    if values.ndim == 0:
+        return math.degrees(float(values))
+    return np.degrees(np.asarray(values, dtype=float))

@@ -10,7 +10,7 @@ from dhlab import deg
 from dhlab.course.exercises import (Exercise, Feedback, _seed000_DefinirTHz, available, check_choice, check_function,
                              check_matrix, check_solutions, check_terms, check_value, exercise,
                              seed001_DefinirTHz)
-from dhlab.transforms import Rx, Rz, inv, trans
+from dhlab.transforms import Rx, Rz, trans
 
 TH = sp.Symbol("theta")
 
@@ -70,8 +70,8 @@ def test_wrong_sign_of_one_entry_is_located():
 def test_transposed_rotation_and_inverse():
     assert "the transpose of the right one" in text(check_matrix(Rz(-TH), Rz(TH)))
     assert "the transpose of the right one" in text(check_matrix(Rz(TH)[:3, :3].T, Rz(TH)[:3, :3]))
-    T = Rz(TH) * trans(1, 2, 0)
-    assert "the inverse of the right matrix" in text(check_matrix(inv(T), T))
+    T = Rz(TH) * sp.Matrix(trans(1, 2, 0))
+    assert "the inverse of the right matrix" in text(check_matrix(sp.simplify(T.inv()), T))
     assert "rows as columns" in text(check_matrix(sp.Matrix([[1, 2], [3, 4]]).T, sp.Matrix([[1, 2], [3, 4]])))
 
 
@@ -154,10 +154,10 @@ def test_value_mistakes():
     assert "the sign is wrong" in text(check_value(-0.5, 0.5))
     assert "every component has the wrong sign" in text(check_value([-1, -2], [1, 2]))
     assert "in the wrong order: the order is (x, y)" in text(check_value([2, 1], [1, 2], components="xy"))
-    assert "rounded too much" in text(check_value(0.87, math.sqrt(3) / 2))
+    assert "close, but not right to the 2 decimals you typed" in text(check_value(0.86, math.sqrt(3) / 2))
     assert "must be 3 numbers; you gave 2" in text(check_value([1, 2], [1, 2, 3]))
     assert "within one turn" in text(check_value(0.5 + 2 * math.pi, 0.5, unit="rad"))
-    assert "it is 0" in text(check_value([1, 0.3], [0, 0.3]))
+    assert "you gave 1, which is not right." in text(check_value([1, 0.3], [0, 0.3]))   # not "it is 0"
     assert check_value(..., 1).status == "unanswered"
     fb = check_value([1, 1], [1, 2], mistakes=[([1, 1], "known")])
     assert fb.items == ["known"]
@@ -170,7 +170,8 @@ def test_solutions_any_order_modulo_a_turn():
     assert check_solutions(expected[::-1], expected, **opts).ok
     assert check_solutions([[0.4, 0.6435], [1.2, 2.4981 - 2 * math.pi]], expected, **opts).ok
     fb = check_solutions([[0.4, 0.6435]], expected, **opts)
-    assert "there are 2 solutions; you gave 1." in text(fb) and "missing: the solution" in text(fb)
+    assert "there are 2 solutions; you gave 1." in text(fb) and "missing: 1 more solution" in text(fb)
+    assert "2.498" not in text(fb)                         # the missing solution is not given away
     fb = check_solutions([[0.4, 0.6435], [0.4, 0.6435]], expected, **opts)
     assert "is given twice" in text(fb)
     fb = check_solutions([[0.4, 0.6435], [1.25, 2.4981]], expected, **opts)
@@ -252,6 +253,9 @@ def right_answers(cases):
         "4.2": list(dhlab.ik.pr_mechanism_ik(pr, 1.8, 0.3)),
         "4.3": [len(dhlab.ik.pr_mechanism_ik(pr, x, y)) for x, y in ((1.5, -0.5), (1.5, 0.7), (2.5, 0.1))],
         "4.4": dhlab.robots.rrr_example().fk(deg([90, 30, 60]))[:3, 3],
+        "3.5": dhlab.robots.robot_no_tan_elemental_2().fk([-math.pi / 2, 0.30])[:3, 3],
+        "2.5": (dhlab.Rz(deg(90)) @ dhlab.trans(1, 0, 0))[:3, 3],
+        "4.5": "branch " + "AB"[int(pr.qlim[0][0] <= dhlab.ik.pr_mechanism_ik(pr, 1.2, 0.25)[1][0] <= pr.qlim[0][1])],
     }
 
 
@@ -298,6 +302,8 @@ MISTAKES = [
     ("2.3", np.block([[Rz(math.pi / 2)[:3, :3].T, np.array([[1], [2], [0]])], [np.array([[0, 0, 0, 1]])]]),
      "the translation of the inverse is −Rᵀ·p, not p."),
     ("2.4", seed001_DefinirTHz, "still seed 001's listing, unchanged: it has two bugs"),
+    ("2.5", [1, 0, 0], "the move along the FIXED x0 axis"),
+    ("2.5", [0, -1, 0], "counter-clockwise"),
     ("2.4", only_cos_fixed, "erratum 001-2"),
     ("2.4", only_d_fixed, "erratum 001-1"),
     ("3.1", eq3_H1(), "erratum 004-1"),
@@ -315,9 +321,11 @@ MISTAKES = [
     ("4.1", [0.75, 0.5 * math.sin(math.radians(60))], "x is missing l1 = 1"),
     ("4.2", [[0.4, math.asin(0.6)], [0.4, math.pi - math.asin(0.6)]], "erratum 003-1"),
     ("4.2", [[0.4, math.degrees(math.asin(0.6))], [1.2, 180 - math.degrees(math.asin(0.6))]], "in degrees"),
-    ("4.2", [[0.4, math.asin(0.6)]], "missing: the solution"),
+    ("4.2", [[0.4, math.asin(0.6)]], "missing: 1 more solution"),
     ("4.3", [2, 0, 2], "(1.5, −0.5): you gave 2"),
     ("4.4", [1 + 2 * math.sin(30) + 1.5 * math.sin(90), 0, 0], "90, 30, 60 radians"),
+    ("4.5", "A", "is it still ≥ 0?"),
+    ("4.5", "both", "one of them is below the slider's range"),
 ]
 
 

@@ -9,6 +9,7 @@ import nbformat
 import numpy as np
 import pytest
 import sympy as sp
+from hypothesis import HealthCheck, given, settings, strategies as st
 
 import dhlab
 from dhlab import robots
@@ -17,6 +18,7 @@ from dhlab.course.exercises_dh import (WRIST_Q_DEG, available, axis_relation, ch
                                 check_link_matrix, check_parallel_pairs, check_table, check_thlist_slots,
                                 check_wrist_centre, check_x_cases, compare_robots, exercise, four_axis_arm,
                                 link_exercise_robot, parallel_pairs, printed_key_position, row_exercise_frames)
+from dhlab.course.exercises import Feedback
 from dhlab.transforms import Rx, Rz, dh_matrix, trans
 
 NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
@@ -49,18 +51,31 @@ def test_x_cases_right_answer_in_several_spellings():
         assert check_x_cases(answer).ok, answer
 
 
-def test_x_cases_wrong_answer_names_x_i_and_the_true_relation():
+def test_x_cases_wrong_answer_refutes_without_giving_the_answer_away():
     fb = check_x_cases({1: "intersect", 2: "parallel", 3: "intersect"})
     item = only_item(fb)
-    assert item.startswith("x1: you said the axes intersect, but z0 and z1 are skew")
-    assert "0.2 long" in item and "case 3" in item
+    assert item.startswith("x1: you said z0 and z1 intersect, but they do not meet")
+    assert "0.2" in item
+    for answer in ({1: "intersect", 2: "parallel", 3: "intersect"}, {1: "parallel", 2: "skew", 3: "skew"},
+                   {1: "skew", 2: "intersect", 3: "parallel"}, {1: 2, 2: 3, 3: 2}):
+        for item in check_x_cases(answer).items:
+            said = item.split(", but", 1)[0]
+            why = item.split(", but", 1)[1]
+            # the refutation names no case and no relation: the student still has to find it
+            assert not re.search(r"case \d|skew|parallel|intersect", why.replace("skew lines never", "")), item
+            assert said.startswith("x")
+
+
+def test_x_cases_accept_spanish_words_and_string_keys():
+    assert check_x_cases({"x1": "se cruzan", "x2": "paralelos", "x3": "se cortan"}).ok
+    assert check_x_cases({"1": "caso 3", "2": "caso 2", "3": "caso 1"}).ok
 
 
 def test_x_cases_reproduce_the_seed_claims_for_the_ssrms():
     ssrms = robots.ssrms()
     assert check_x_cases([1, 1, 2, 2, 1, 1], robot=ssrms).ok
     fb = check_x_cases([1, 1, 1, 2, 1, 1], robot=ssrms)
-    assert "x3" in only_item(fb) and "parallel, 12 apart" in only_item(fb)
+    assert "x3" in only_item(fb) and "do not meet" in only_item(fb) and "is 12, not 0" in only_item(fb)
 
 
 def test_x_cases_coincident_axes_accept_either_word():
@@ -227,6 +242,7 @@ def test_thlist_slots():
     assert check_thlist_slots({k: 2 * k for k in range(1, 8)}).ok
     fb = check_thlist_slots({k: 2 * k + (1 if k == 3 else 0) for k in range(1, 8)})
     assert only_item(fb).startswith("joint 3: not THList[7]: THList[7] is link 3's Tx[α, a] factor")
+    assert "THList[6]" not in only_item(fb) and "just before" not in only_item(fb)      # not the answer
     fb = check_thlist_slots({k: 2 * k - (2 if k == 1 else 0) for k in range(1, 8)})
     assert "the Tz factor of the base" in only_item(fb)
 
@@ -237,7 +253,8 @@ def test_parallel_pairs_of_the_ssrms():
     fb = check_parallel_pairs({(3, 4), (4, 5), (3, 5), (1, 3)})
     assert only_item(fb) == ("joints 1 and 3: parallel at θ = 0, but not at every configuration: "
                              "at θ = (0, 30, 0, 0, 0, 0, 0)° they are not.")
-    assert "joints 3 and 5: missing" in only_item(check_parallel_pairs({(3, 4), (4, 5)}))
+    item = only_item(check_parallel_pairs({(3, 4), (4, 5)}))
+    assert item.startswith("1 pair of joints") and "missing" in item and "(3, 5)" not in item and "3 and 5" not in item
 
 
 def test_printed_key_positions_match_verified_math_5_5():
@@ -279,6 +296,62 @@ def test_no_input_makes_a_check_raise(key):
     for answer in GARBAGE:
         fb = ex.check(answer)
         assert fb.status == "wrong" and fb.items, (key, answer, str(fb))
+
+
+# --- the checks themselves never raise (not only through Exercise.check, which would hide it) ----------
+DIRECT = {"5.1": check_x_cases, "5.2": check_dh_row, "5.3": lambda rows: check_table(rows, "arm"),
+          "6.1": lambda M: check_link_matrix(M, 2), "6.2": check_wrist_centre,
+          "6.3": lambda rows: check_table(rows, "seed002_4dof", different=True),
+          "7.1": check_thlist_slots, "7.2": check_parallel_pairs, "7.3": check_key_jump}
+JUNK = [np.nan, math.inf, -math.inf, 1 + 2j, sp.zoo, sp.nan, sp.oo, sp.Integral(sp.Symbol("x"), sp.Symbol("x")),
+        sp.Function("f")(sp.Symbol("q2")), None, True, 10 ** 400, -10 ** 30, "", "q1", b"bytes", 2.5, -7,
+        np.array([1.0, np.nan]), np.zeros((4, 4)), sp.eye(4), sp.zeros(3, 1), [np.nan] * 4, [1, 2, 3, 4, 5],
+        [None, 0, 0, 0], [True, 0, 0, 0], [[1, 2], [3]], ["q1", "l1", 0], [("q1", np.inf, 0, 0)] * 4,
+        [("q1", 0, 0, 1e300)] * 4, [(1 + 1j, 0, 0, 0)] * 4, [("q1", None, 0, 0)] * 4, [{"a": 1}] * 4,
+        {1: np.nan, 2: None, 3: "x"}, {(1, 2), ("a", "b")}, {(1, np.inf)}, {(1, 2, 3)}, "1234",
+        {k: math.inf for k in range(1, 8)}, {k: 2.5 for k in range(1, 8)}, {k: True for k in range(1, 8)},
+        {"x1": "skew", "x9": "skew"}, object(), sp.Matrix([[sp.zoo, 0], [0, 1]]), slice(1, 2), range(4)]
+
+
+def test_five_two_refuses_a_dict_whose_keys_are_the_right_row():
+    # iterating a dict gives its keys: this answer was once marked correct
+    fb = exercise("5.2").check({120: "a", 0.3: "b", 0.4: "c", -90: "d"})
+    assert fb.status == "wrong" and "dict" in fb.items[0], str(fb)
+    assert exercise("5.2").check((120, 0.3, 0.4, -90)).ok
+
+
+@pytest.mark.parametrize("key", sorted(DIRECT))
+@pytest.mark.parametrize("answer", JUNK, ids=[type(j).__name__ + str(i) for i, j in enumerate(JUNK)])
+def test_checks_give_feedback_for_junk(key, answer):
+    fb = DIRECT[key](answer)
+    assert fb.status in ("wrong", "unanswered"), (key, answer, str(fb))
+    assert fb.status == "unanswered" or fb.items, str(fb)
+    assert "Error" not in str(fb), str(fb)          # a reason in the student's terms, not an exception's name
+
+
+def _junk():
+    leaves = st.one_of(st.none(), st.booleans(), st.integers(), st.floats(allow_nan=True, allow_infinity=True),
+                       st.complex_numbers(), st.text(max_size=8),
+                       st.sampled_from([sp.zoo, sp.nan, sp.oo, sp.pi, sp.Symbol("q2"), sp.Symbol("l1"),
+                                        sp.Integral(sp.Symbol("x"), sp.Symbol("x")), sp.I]),
+                       st.sampled_from(["q1", "q2 - 90", "l1", "d2", "skew", "parallel", "intersect", "caso 2"]))
+    return st.recursive(leaves, lambda kids: st.one_of(
+        st.lists(kids, max_size=8), st.tuples(kids, kids, kids, kids),
+        st.dictionaries(st.integers(-2, 9), kids, max_size=8),
+        st.frozensets(st.tuples(st.integers(-2, 9), st.integers(-2, 9)), max_size=5),
+        st.lists(st.tuples(kids, kids, kids, kids), min_size=4, max_size=4)), max_leaves=24)
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(answer=_junk(), key=st.sampled_from(sorted(DIRECT)))
+def test_random_answers_in_feedback_out(answer, key):
+    fb = DIRECT[key](answer)
+    assert isinstance(fb, Feedback)
+    assert fb.status in ("correct", "wrong", "unanswered")
+    assert fb.status != "wrong" or fb.items
+    str(fb), fb._repr_html_()
+    via_exercise = exercise(key).check(answer)
+    assert via_exercise.status == fb.status
 
 
 def test_exercise_keys_used_in_the_notebooks_exist():
@@ -410,7 +483,7 @@ def test_notebook_states_the_errata_where_they_arise(name):
 
 
 @pytest.mark.parametrize("name", NOTEBOOK_NAMES)
-def test_notebook_panels_are_not_compared_and_exercises_end_it(name):
+def test_notebook_panels_are_not_compared_and_exercises_are_asked_before_answered(name):
     nb = _notebook(name)
     for cell in nb.cells:
         if cell.cell_type == "code" and any("<dhlab" in o.get("data", {}).get("text/plain", "") for o in cell.outputs):
@@ -418,4 +491,24 @@ def test_notebook_panels_are_not_compared_and_exercises_end_it(name):
     checks = [i for i, c in enumerate(nb.cells) if c.cell_type == "code" and re.search(r"ex\d+\.check\(", c.source)]
     assert 2 <= len(checks) <= 4, f"{name}: {len(checks)} exercises"
     start = next(i for i, c in enumerate(nb.cells) if c.cell_type == "markdown" and c.source.startswith("## Exercises"))
-    assert all(i > start for i in checks)
+    for i in checks:        # at the end, or in the text as predict-then-check: the worked answer comes after it
+        assert i > start or any(c.cell_type == "markdown" and c.source.startswith("**Check your prediction.**")
+                                for c in nb.cells[i + 1:i + 4]), f"{name}: exercise cell {i} is not predict-then-check"
+    assert nb.cells[-1].source.startswith("## Recap")
+
+
+def test_notebook_7_asks_exercise_7_1_before_printing_its_answer():
+    nb = _notebook("07_ssrms")
+    ask = next(i for i, c in enumerate(nb.cells) if 'exercise("7.1")' in c.source)
+    answers = [i for i, c in enumerate(nb.cells) if c.cell_type == "code" and "writes THList[" in _outputs([c])]
+    tables = [i for i, c in enumerate(nb.cells) if c.cell_type == "markdown" and "| index in `THList`" in c.source]
+    assert answers and tables and min(answers + tables) > ask
+
+
+@pytest.mark.parametrize("module", ["exercises_dh", "exercises_dh_common", "exercises_dh_frames",
+                                    "exercises_dh_links", "exercises_dh_ssrms"])
+def test_docstring_examples(module):
+    import doctest
+    import importlib
+    result = doctest.testmod(importlib.import_module(f"dhlab.course.{module}"), optionflags=doctest.NORMALIZE_WHITESPACE)
+    assert result.failed == 0

@@ -21,13 +21,14 @@ from dhlab.grading import checks, generate, gradebook, puma
 from dhlab.validation import DHLabError
 
 ROOT = Path(__file__).resolve().parents[1]
-SOURCE = ROOT / "notebooks" / "source" / "08_puma_assignment.ipynb"
+SOURCE = ROOT / "dhlab" / "grading" / "data" / "08_puma_assignment.ipynb"
 STUDENT = ROOT / "notebooks" / "08_puma_assignment.ipynb"
 q1, q2, q3, q4, q5, q6 = A.joint_variables(6)
 QS = (q1, q2, q3, q4, q5, q6)
 
 
-@pytest.mark.parametrize("name", ["puma", "answers", "checks", "gradebook", "generate", "runner", "sandbox"])
+@pytest.mark.parametrize("name", ["puma", "answers", "checks", "part3", "gradebook", "generate", "runner", "sandbox",
+                                  "isolation", "staging", "cli"])
 def test_docstring_examples_of_the_grading_modules(name):
     module = importlib.import_module(f"dhlab.grading.{name}")
     result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE)
@@ -82,6 +83,7 @@ def test_the_source_notebooks_solution_scores_full_marks():
     report = _report(_solution_namespace())
     assert report.score == report.max_score == sum(checks.POINTS.values())
     assert "all 6 joint axes" in report.part("part3").text()
+    assert "move like the PUMA 560" in report.part("part3").text()
 
 
 def test_random_valid_dh_assignments_score_full_marks():
@@ -191,8 +193,10 @@ def test_part1_mistakes_and_the_ways_students_write_answers():
     part = _report(ns).part("part1")
     messages = {w.label: w.message for w in _wrong(part)}
     assert set(messages) == {"n_links", "joint_types", "x3"}
-    assert "n + 1 links" in messages["n_links"]
-    assert "skew" in messages["x3"] and "0.0203 m" in messages["x3"]
+    assert "link 0" in messages["n_links"] and "n + 1" not in messages["n_links"]    # a hint, not the answer
+    assert "7" not in messages["n_links"].replace("you wrote 6", "")
+    assert "joints 3 and 4" in messages["x3"] and "skew" not in messages["x3"]
+    assert "joint 6" in messages["joint_types"] and "revolute" not in messages["joint_types"]
     ns.update(n_links=7.0, joint_types=["revolute"] * 6,
               x_cases={1: "case 1", 2: "Paralelos", 3: "ni paralelos ni se intersecan", 4: 1, 5: "intersecting"})
     assert _report(ns).part("part1").full_marks
@@ -216,19 +220,20 @@ def test_part2_mistakes_cost_only_those_links():
     assert report.part("part2").score == pytest.approx(3 * 4 / 7, abs=0.01)
 
 
-def test_part2_must_fit_the_frames_the_chain_builds_when_the_chain_is_right():
+def test_part2_is_scored_by_the_dh_rules_alone_and_a_note_says_when_the_frames_differ():
     rng = np.random.default_rng(3)
     ns = _namespace_from_frames(puma.random_valid_frames(rng))
     ns["link_points"] = _solution_namespace()["link_points"]        # valid, but other frames
     report = _report(ns)
-    assert report.part("part3").full_marks
-    wrong = _wrong(report.part("part2"))
-    assert wrong and all("not in the frame" in w.message for w in wrong)
-    ns["T5"] = A.Tz(q5, 0) @ A.Tx(0, 0)                              # now the chain has a mistake:
+    assert report.score == 10                                        # both parts are valid on their own
+    notes = report.part("part2").notes
+    assert len(notes) == 1 and notes[0].startswith("(not scored)") and "not in the one your T1…T6 build" in notes[0]
+    assert "(not scored)" in A.check_part3(ns).text()                # the notebook says it after part 3
+    ns["T5"] = A.Tz(q5, 0) @ A.Tx(0, 0)                              # a mistake in part 3:
     ns["chain"] = _chain(ns)
-    report = _report(ns)                                             # part 2 is judged alone
-    assert report.part("part2").full_marks
-    assert "checked against the DH rules alone" in report.part("part2").text()
+    report = _report(ns)
+    assert report.part("part2").score == 3 and not report.part("part2").notes    # part 2 unchanged, no note
+    assert report.part("part3").score == pytest.approx(5 * 6 / 7, abs=0.01)
 
 
 def test_nothing_answered_gives_zero_with_not_answered():
@@ -299,7 +304,7 @@ def test_the_check_functions_and_the_figures_in_a_notebook_namespace():
     ns = _solution_namespace()
     feedback = A.check_part3(ns)
     assert feedback.score == checks.POINTS["part3"] and feedback.full_marks
-    assert "part 2 checked again" in feedback.text()
+    assert "checked again" not in feedback.text() and "move like the PUMA 560" in feedback.text()
     assert "<b>" in feedback._repr_html_()
     assert A.check_part(2, {"link_points": ns["link_points"]}).full_marks
     with pytest.raises(DHLabError):
@@ -328,6 +333,29 @@ def test_the_student_notebook_has_stubs_and_no_solutions():
     assert len(answers_cells) == 3
     assert all("# YOUR CODE HERE" in "".join(c["source"]) for c in answers_cells)
     assert all(c.get("outputs") == [] for c in student["cells"] if c["cell_type"] == "code")
+
+
+def test_the_student_notebook_is_clean():
+    """No teacher-only text, no answer in a comment, one place to type each answer, no file
+    a clone lacks; the solutions live outside notebooks/ (make lab never shows them)."""
+    student = json.loads(STUDENT.read_text(encoding="utf-8"))
+    text = "\n".join("".join(c["source"]) for c in student["cells"])
+    for teacher in ("For teachers", "nbgrader", "dhlab-grade", "generate", "ERRATA", "VERIFIED_MATH", "shared/seeds",
+                    "seeds/"):
+        assert teacher not in text, teacher
+    answer = ["intersect", "parallel", "skew", "intersect", "intersect"]
+    assert json.dumps(answer) not in text and str(answer) not in text
+    for cell in student["cells"]:
+        if cell["metadata"].get("nbgrader", {}).get("solution"):
+            code = "".join(cell["source"]).splitlines()
+            assert code.count("# YOUR CODE HERE") == 1 and code[-1] == "# YOUR CODE HERE"
+            assert all(line.startswith("#") for line in code)          # nothing to delete or overwrite
+        if "%matplotlib widget" in "".join(cell["source"]):
+            assert "import ipympl" in "".join(cell["source"])
+    assert "09_sources_and_errata.ipynb" in text
+    assert not (ROOT / "notebooks" / "source").exists()
+    assert SOURCE.is_file() and "notebooks" not in SOURCE.relative_to(ROOT).parts
+    assert sorted(p.name for p in (ROOT / "notebooks").glob("*08*")) == ["08_puma_assignment.ipynb"]
 
 
 def test_points_in_the_notebook_are_the_checks_points():
@@ -401,10 +429,14 @@ def test_gradebook_writes_are_atomic(tmp_path, monkeypatch):
     assert [p.name for p in tmp_path.iterdir()] == ["gradebook.csv"]  # no temporary file left
 
 
-def test_feedback_file_names_are_safe():
-    assert gradebook.feedback_filename("alice/ps1/puma") == "alice__ps1__puma.txt"
+def test_feedback_file_names_are_safe_and_unique():
+    assert gradebook.feedback_filename("alice/ps1/puma").startswith("alice__ps1__puma-")
     assert "/" not in gradebook.feedback_filename("../../etc/passwd")
     assert gradebook.feedback_filename("..").endswith(".txt")
+    names = ["Ana María", "Ana_María", "Ana_Maria", "ana_maria", "Ana  María", "a/b", "a__b", "ANA MARÍA"]
+    files = [gradebook.feedback_filename(n) for n in names]
+    assert len({f.lower() for f in files}) == len(names)              # unique even on case-insensitive disks
+    assert all(f.isascii() and len(f) < 200 for f in files)
 
 
 def test_answers_written_the_ways_students_write_them():
@@ -432,3 +464,196 @@ def test_the_runner_reads_notebook_formats_3_and_4(tmp_path):
     (tmp_path / "bad.ipynb").write_bytes(b"\xff\xfe not text")
     with pytest.raises(runner.NotebookError, match="UTF-8"):
         runner.read_code_cells(tmp_path / "bad.ipynb")
+
+
+# --- one slip, one item (issue 10, item 1) ------------------------------------------------------
+
+def _rows_to_namespace(ns, rows):
+    for i, (sign, theta, d, a, alpha) in enumerate(rows, start=1):
+        ns[f"T{i}"] = A.Tz(sign * QS[i - 1] + round(theta, 9), round(d, 9)) @ A.Tx(round(alpha, 9), round(a, 9))
+    ns["chain"] = _chain(ns)
+    return ns
+
+
+SLIPS = {"α+180": lambda r: (r[0], r[1], r[2], r[3], r[4] + 180), "-α": lambda r: (r[0], r[1], r[2], r[3], -r[4]),
+         "θ+180": lambda r: (r[0], r[1] + 180, r[2], r[3], r[4]), "-a": lambda r: (r[0], r[1], r[2], -r[3], r[4])}
+
+
+@pytest.mark.parametrize("seed", range(5))
+@pytest.mark.parametrize("k", range(1, 7))
+@pytest.mark.parametrize("slip", list(SLIPS))
+def test_a_single_slip_costs_at_most_its_own_row(seed, k, slip):
+    """One parameter of T_k typed wrong, in any valid assignment: at most T_k is charged
+    (nothing when the slip leaves a valid answer, e.g. x6 turned over), never a later row,
+    and a charged frame flip names the parameter of T_k."""
+    frames = puma.random_valid_frames(np.random.default_rng(seed))
+    rows = puma.dh_rows_from_frames(frames)
+    if SLIPS[slip](rows[k - 1]) == rows[k - 1]:
+        return                                                     # -α with α = 0: no slip at all
+    rows[k - 1] = SLIPS[slip](rows[k - 1])
+    ns = _rows_to_namespace(_solution_namespace(), rows)
+    report = _report(ns)
+    wrong = _wrong(report.part("part3"))
+    labels = [w.label.split(" ")[0] for w in wrong]
+    if not labels:                                                 # then the answer really is valid
+        match = checks.chain_matches(checks._rows(ans.answers_from_namespace(ns)))
+        assert all(match["axes"]) and match["end_effector"] and match["last_z"]
+    else:
+        assert labels == [f"T{k}"], report.part("part3").text()
+        if "builds a valid frame" in wrong[0].message:
+            assert f"α{k}" in wrong[0].message or f"θ{k}'s offset" in wrong[0].message
+    assert report.score >= 10 - 5 / 7 - 0.01
+
+
+def test_the_issues_slips_cost_one_item_each_and_name_the_parameter():
+    for name, T, words in [("T1", A.Tz(q1, 0) @ A.Tx(-90, 0), "α1 = 90° instead of -90°"),
+                           ("T3", A.Tz(q3, 0.15005) @ A.Tx(90, 0.0203), "α3 = -90° instead of 90°")]:
+        ns = _solution_namespace()
+        ns[name] = T
+        ns["chain"] = _chain(ns)
+        report = _report(ns)
+        wrong = _wrong(report.part("part3"))
+        assert [w.label.split(" ")[0] for w in wrong] == [name] and words in wrong[0].message
+        assert _scores(report) == pytest.approx([2, 3, 5 * 6 / 7], abs=0.01)
+    # frames with x1 backwards (a valid choice), and the +180° of θ1 forgotten
+    frames = list(puma.reference().home_frames)
+    frames[1] = frames[1] @ np.diag([-1.0, -1, 1, 1])
+    rows = puma.dh_rows_from_frames(frames)
+    assert round(rows[0][1]) == 180
+    rows[0] = (rows[0][0], 0.0, *rows[0][2:])
+    report = _report(_rows_to_namespace(_solution_namespace(), rows))
+    wrong = _wrong(report.part("part3"))
+    assert [w.label.split(" ")[0] for w in wrong] == ["T1"] and "θ1's offset 180° instead of 0°" in wrong[0].message
+
+
+def test_a_sign_slip_in_one_row_is_charged_to_that_row_not_to_the_one_before():
+    ns = _solution_namespace()
+    ns["T2"] = A.Tz(-q2, 0) @ A.Tx(0, 0.4318)
+    ns["chain"] = _chain(ns)
+    wrong = _wrong(_report(ns).part("part3"))
+    assert [w.label.split(" ")[0] for w in wrong] == ["T2"] and "turns the arm the wrong way" in wrong[0].message
+
+
+def _mutations(ns):
+    """Single-item mutations of a namespace: (what, new namespace)."""
+    out = []
+    for name, value in [("n_links", 5), ("n_joints", 7), ("joint_types", "RRPRRR"),
+                        ("x_cases", ["parallel", "parallel", "skew", "intersect", "intersect"])]:
+        out.append((name, {**ns, name: value}))
+    lp = ns["link_points"]
+    lp = dict(lp) if isinstance(lp, dict) else dict(enumerate(lp))
+    for k in range(7):
+        for shift in ((0.05, 0, 0), (0, 0, -0.1)):
+            moved = dict(lp)
+            moved[k] = [tuple(np.add(p, shift)) for p in lp[k]]
+            out.append((f"link {k}", {**ns, "link_points": moved}))
+    rows = ans.answers_from_namespace(ns).T
+    for i, row in enumerate(rows, start=1):
+        q = QS[i - 1] if row.theta.sign > 0 else -QS[i - 1]
+        for what, (theta, d, alpha, a) in {
+            "α+90": (row.theta.const, row.d.const, row.alpha + 90, row.a),
+            "-α": (row.theta.const, row.d.const, -row.alpha, row.a),
+            "θ+180": (row.theta.const + 180, row.d.const, row.alpha, row.a),
+            "θ+90": (row.theta.const + 90, row.d.const, row.alpha, row.a),
+            "d+0.1": (row.theta.const, row.d.const + 0.1, row.alpha, row.a),
+            "a+0.1": (row.theta.const, row.d.const, row.alpha, row.a + 0.1),
+        }.items():
+            new = {**ns, f"T{i}": A.Tz(q + theta, d) @ A.Tx(alpha, a)}
+            new["chain"] = _chain(new)
+            out.append((f"T{i} {what}", new))
+        new = {**ns, f"T{i}": A.Tz(-q + row.theta.const, row.d.const) @ A.Tx(row.alpha, row.a)}
+        new["chain"] = _chain(new)
+        out.append((f"T{i} -q", new))
+    out.append(("chain", {**ns, "chain": ns["T2"] @ ns["T1"] @ ns["T3"] @ ns["T4"] @ ns["T5"] @ ns["T6"]}))
+    return out
+
+
+def _fixture_namespaces():
+    """The solution, valid alternatives, and answers with one slip (the slip fixtures)."""
+    out = {"solution": _solution_namespace()}
+    for seed in (1, 2):
+        out[f"random valid {seed}"] = _namespace_from_frames(puma.random_valid_frames(np.random.default_rng(seed)))
+    slip = _solution_namespace()
+    slip["T1"] = A.Tz(q1, 0) @ A.Tx(-90, 0)
+    slip["chain"] = _chain(slip)
+    out["slip α1"] = slip
+    mixed = _namespace_from_frames(puma.random_valid_frames(np.random.default_rng(5)))
+    mixed["link_points"] = _solution_namespace()["link_points"]
+    out["mixed frames"] = mixed
+    return out
+
+
+@pytest.mark.parametrize("fixture", list(_fixture_namespaces()))
+def test_a_wrong_answer_never_scores_more_than_the_right_one(fixture):
+    """score(mutated) ≤ score(original) for every single-item mutation, part by part; and a
+    report never carries contradictory notes."""
+    ns = _fixture_namespaces()[fixture]
+    base = _report(ns)
+    credited = {item.label.split(" ")[0] for part in base.parts for item in part.items if item.ok}
+    credited |= {f"link {k}" for k in range(7) if base.part("part2").items[k].ok}
+    for what, mutated in _mutations(ns):
+        if what.split(" ")[0] not in credited and " ".join(what.split(" ")[:2]) not in credited:
+            continue                                             # only mutate what was right
+        report = _report(mutated)
+        for mine, theirs in zip(report.parts, base.parts):
+            assert mine.score <= theirs.score + 1e-9, (fixture, what, mine.text())
+        part3 = report.part("part3")
+        if any("move like" in n for n in part3.notes):
+            assert all(item.ok for item in part3.items[:-1])
+        assert not any("internal check failed" in n for n in part3.notes), (fixture, what)
+        notes2 = report.part("part2").notes
+        if notes2 and notes2[0].startswith("(not scored)"):
+            assert all(item.ok for item in part3.items[:-1])
+
+
+# --- one checking path (issue 10, item 2) -------------------------------------------------------
+
+def test_numbers_of_every_type_are_read_the_same_way():
+    import sympy as sp
+    ns = _solution_namespace()
+    plain = ans.answers_from_namespace(ns)
+    odd = dict(ns)
+    odd["n_links"], odd["n_joints"] = np.int64(7), sp.Integer(6)
+    odd["joint_types"] = np.array(list("RRRRRR"))
+    lp = ns["link_points"]
+    odd["link_points"] = {k: [tuple(np.asarray(p, dtype=np.float64)) for p in pts] for k, pts in lp.items()}
+    odd["link_points"][2] = np.array(lp[2])
+    odd["link_points"][3] = [sp.Matrix(p) for p in lp[3]]
+    odd["link_points"][4] = [tuple(sp.Float(v) for v in p) for p in lp[4]]
+    odd["T1"] = A.Tz(q1, 0) @ A.Tx(dhlab.deg(90), 0)
+    odd["T2"] = A.Tz(q2 + dhlab.deg(0), 0) @ A.Tx(0, np.float64(0.4318))
+    odd["T4"] = A.Tz(q4, np.float32(0.4318)) @ A.Tx(sp.Integer(90), 0)
+    odd["chain"] = _chain(odd)
+    read = ans.answers_from_namespace(odd)
+    assert read.n_links == plain.n_links and read.n_joints == plain.n_joints
+    assert read.joint_types == plain.joint_types
+    for a, b in zip(read.link_points, plain.link_points):
+        assert np.allclose(a, b)
+    assert read.T[0] == plain.T[0] and read.T[1] == plain.T[1]
+    assert checks.check_all(read).score == 10
+
+
+def test_the_notebook_and_the_grader_read_through_the_same_functions():
+    """The grader's kernel-side writer is built from answers.to_plain and answers.encode_json
+    themselves, and the notebook's check reads through parse_json(encode_json(to_plain(...)))."""
+    from dhlab.grading import runner
+    code = runner._extract_code(Path("/tmp/x.json"))
+    assert "def to_plain(" in code and "def encode_json(" in code
+    ns = {"link_points": [[(np.float64(1.0), np.float64(2.0), np.float64(3.0))]]}
+    raw = ans.encode_json({k: ans.to_plain(v) for k, v in ns.items()})
+    assert json.loads(raw) == {"link_points": [[[1.0, 2.0, 3.0]]]}
+    assert ans.answers_from_namespace(ns).link_points == [[(1.0, 2.0, 3.0)]]
+
+
+def test_any_answer_gets_feedback_never_an_exception():
+    import sympy as sp
+    junk = [float("nan"), float("inf"), 1e308, -1e308, complex(1, 2), sp.zoo, sp.nan, None, True, "",
+            [None, True], {"a": object()}, np.array([[1, 2], [3, 4]]), np.zeros((0, 3)), sp.Symbol("x"),
+            [[1, 2, 3, 1]], [(1e300, 0, 0)], 10 ** 400, lambda q: q, type, ...]
+    for value in junk:
+        for name in ans.ANSWER_NAMES:
+            ns = {**_solution_namespace(), name: value}
+            for part in (1, 2, 3):
+                feedback = A.check_part(part, ns)
+                assert isinstance(feedback.text(), str)
+    assert "drop the trailing 1" in A.check_part(2, {"link_points": {0: [[0, 0, -0.67183, 1]]}}).text()

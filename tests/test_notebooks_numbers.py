@@ -1,14 +1,17 @@
-"""The numbers that notebooks 1-4 state are the numbers their code prints, and those match seed_cases.json.
+"""The numbers the notebooks state are the numbers their code prints, and those match seed_cases.json.
 
 These tests read the stored notebooks (executed by ``python -m dhlab.execute``; nbval checks that the stored
 outputs are what the code prints today). They check that:
 
 * every decimal number written in a notebook's text (outside the exercise statements, whose numbers are
-  data) appears, to the digits shown, in that notebook's code outputs;
+  data) appears, to the digits shown, in that notebook's code outputs — for every notebook of the course;
 * the key numbers of the seeds' cases (``seed_cases.json``) appear in the outputs of cells marked
   ``# NBVAL_CHECK_OUTPUT``, so that a change in the maths fails the suite;
 * every erratum of seed 004 (and the others met in these notebooks) is stated where it arises;
-* cells that show a live panel do not have their (random) widget output compared.
+* cells that show a live panel do not have their (random) widget output compared;
+* every notebook opens with what the student will be able to do and ends with a recap and where to go
+  next, refers to no file a clone lacks, and carries what the browser edition needs (``language_info``,
+  ``import ipympl`` beside ``%matplotlib widget``).
 """
 import json
 import math
@@ -19,7 +22,9 @@ import nbformat
 import pytest
 
 NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
-NAMES = ["01_start_here", "02_homogeneous_matrices", "03_robot_no_tan_elemental", "04_pr_mechanism_and_spaces"]
+NAMES = sorted(p.stem for p in NOTEBOOKS.glob("[0-9][0-9]_*.ipynb"))      # every notebook of the course
+EXECUTED = [n for n in NAMES if not n.startswith("08_")]   # 08 is the student's version: generated, not run
+BASICS = ["01_start_here", "02_homogeneous_matrices", "03_robot_no_tan_elemental", "04_pr_mechanism_and_spaces"]
 NUMBER = re.compile(r"(?<![\w.])-?\d+(?:\.\d+)?")          # not the 1 of q1 or θ1, nor the 2 of {S_2}
 DECIMAL = re.compile(r"(?<![\w.{,])[-−]?\d+\.\d+(?![\w])")  # decimals in text; seed quotes use commas (0{,}866)
 
@@ -67,7 +72,7 @@ def seed_cases():
 
 
 # --- the notebooks are stored executed, without errors ----------------------------------------------
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", EXECUTED)
 def test_stored_executed_without_errors(notebooks, name):
     for cell in notebooks[name].cells:
         if cell.cell_type != "code":
@@ -77,14 +82,18 @@ def test_stored_executed_without_errors(notebooks, name):
 
 
 # --- numbers in the text are numbers the code prints -----------------------------------------------
+def is_exercise_statement(source) -> bool:
+    """A markdown cell that states an exercise (its numbers are data, not results)."""
+    return (source.lstrip().startswith("## Exercises") or "**Exercise" in source or "**Predict first" in source
+            or re.search(r"\*\*(Part|Task|Question) \d", source) is not None)
+
+
 def text_numbers(nb):
-    """(number as written, digits after the point) in the markdown before the exercises."""
+    """(number as written, digits after the point) in the markdown, exercise statements left out."""
     found = []
     for cell in nb.cells:
-        if cell.cell_type != "markdown":
+        if cell.cell_type != "markdown" or is_exercise_statement(cell.source):
             continue
-        if cell.source.lstrip().startswith("## Exercises") or "**Exercise" in cell.source:
-            break
         # not results: section numbers (§3.2), versions (Python 3.10), code spans
         text = re.sub(r"§\s*[\d.–-]+|Python \d+\.\d+|`[^`]*`", " ", cell.source)
         for match in DECIMAL.findall(text):
@@ -92,7 +101,7 @@ def text_numbers(nb):
     return found
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", EXECUTED)
 def test_numbers_in_the_text_are_printed_by_the_code(notebooks, name):
     nb = notebooks[name]
     printed = numbers("\n".join(output_text(c) for c in nb.cells if c.cell_type == "code"))
@@ -184,9 +193,91 @@ def test_panel_cells_ignore_their_widget_output(notebooks, name):
             assert "# NBVAL_IGNORE_OUTPUT" in cell.source, f"{name}: a panel cell is compared:\n{cell.source[:80]}"
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", BASICS)
 def test_exercises_at_the_end_are_checked_by_dhlab(notebooks, name):
-    cells = [c for c in notebooks[name].cells if c.cell_type == "code" and "exercise(" in c.source]
-    assert 2 <= len(cells) <= 4, f"{name}: {len(cells)} exercises"
-    for cell in cells:
+    cells = notebooks[name].cells
+    start = next(i for i, c in enumerate(cells) if c.cell_type == "markdown" and "## Exercises" in c.source)
+    at_end = [c for c in cells[start:] if c.cell_type == "code" and "exercise(" in c.source]
+    assert 2 <= len(at_end) <= 4, f"{name}: {len(at_end)} exercises"
+    for cell in [c for c in cells if c.cell_type == "code" and "exercise(" in c.source]:
         assert re.search(r"ex\d+\.check\(", cell.source), cell.source
+
+
+def test_the_readers_exercise_of_seed_004_is_predicted_before_it_is_solved(notebooks):
+    """Issue 11: the student answers first (an exercise), the worked solution follows."""
+    cells = notebooks["03_robot_no_tan_elemental"].cells
+    ask = next(i for i, c in enumerate(cells) if c.cell_type == "code" and 'exercise("3.5")' in c.source)
+    solve = next(i for i, c in enumerate(cells) if c.cell_type == "code" and "exercise_pose" in c.source)
+    assert "Predict first" in cells[ask - 1].source and ask < solve
+    assert "The worked answer" in "".join(c.source for c in cells[ask + 1:solve])
+
+
+# --- what every notebook opens and ends with, and what it may refer to ------------------------------------------
+def markdown(nb) -> str:
+    return "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_opens_with_objectives_and_ends_with_a_recap(notebooks, name):
+    cells = [c for c in notebooks[name].cells if c.cell_type == "markdown"]
+    head = "\n".join(c.source for c in cells[:2])
+    assert "After this notebook you can" in head, f"{name}: no learning objectives at the top"
+    lines = head.split("After this notebook you can", 1)[1].splitlines()[1:]
+    bullets, started = 0, False
+    for line in lines:
+        if line.startswith("* "):
+            bullets, started = bullets + 1, True
+        elif started and not line.startswith(" "):
+            break
+    assert 3 <= bullets <= 5, f"{name}: {bullets} objectives (3-5 expected)"
+    if name.startswith("09_"):
+        return                                    # the last notebook: a reference list, nothing after it
+    last = cells[-1].source
+    assert re.search(r"^## Recap", last, flags=re.M), f"{name}: the last cell is not a recap"
+    assert re.search(r"\*\*Next:\*\*.*\]\(\d\d_[\w]+\.ipynb", last, flags=re.S), f"{name}: no 'Next:' link"
+
+
+CLONE_LACKS = re.compile(r"shared/|VERIFIED_MATH|ERRATA\.md|\.\./tests/")
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_refers_to_no_file_a_clone_lacks(notebooks, name):
+    for cell in notebooks[name].cells:
+        found = CLONE_LACKS.findall(cell.source)
+        assert not found, f"{name}: refers to {found} (a clone has no such file):\n{cell.source[:120]}"
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_links_to_other_notebooks_exist(notebooks, name):
+    for cell in notebooks[name].cells:
+        if cell.cell_type != "markdown":
+            continue
+        for target, anchor in re.findall(r"\]\((\d\d_[\w]+\.ipynb)(?:#([\w-]+))?\)", cell.source):
+            assert (NOTEBOOKS / target).exists(), f"{name}: links to {target}, which does not exist"
+            if anchor:
+                other = load(target[:-len(".ipynb")])
+                headings = {re.sub(r"\s+", "-", h.strip()) for h in
+                            re.findall(r"^#+ (.+)$", markdown(other), flags=re.M)}
+                assert anchor in headings, f"{name}: links to {target}#{anchor}, no such heading"
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_ready_for_the_browser_edition(notebooks, name):
+    nb = notebooks[name]
+    assert nb.metadata.get("language_info", {}).get("name") == "python", f"{name}: no language_info"
+    for cell in nb.cells:
+        if cell.cell_type == "code" and "%matplotlib widget" in cell.source:
+            assert "import ipympl" in cell.source, f"{name}: %matplotlib widget without import ipympl"
+
+
+@pytest.mark.parametrize("name", EXECUTED)
+def test_stored_figures_are_readable(notebooks, name):
+    """Issue 9: every stored static figure at least 450 px wide."""
+    import base64
+    import struct
+    for cell in notebooks[name].cells:
+        for out in cell.get("outputs", []):
+            png = out.get("data", {}).get("image/png")
+            if png:
+                width = struct.unpack(">I", base64.b64decode(png)[16:20])[0]
+                assert width >= 450, f"{name}: a figure {width} px wide:\n{cell.source[:80]}"

@@ -54,7 +54,7 @@ def test_stepthrough_of_a_robot_link_goes_from_frame_i_minus_1_to_frame_i():
             np.testing.assert_allclose((tip - start) / panel.length, F[i][:3, k], atol=1e-9)
     with pytest.raises(ValueError, match="not of the DH form"):
         stepthrough_link(robots.robot_no_tan_elemental_1(), 1)
-    with pytest.raises(ValueError, match="link number 1…7"):
+    with pytest.raises(ValueError, match="link number i"):
         stepthrough_link(robot, 8)
 
 
@@ -155,3 +155,39 @@ def test_wrap_into_limits():
     q, ok = wrap_into_limits(robot, [0.5, np.radians(233.13)])
     assert ok and q[1] == pytest.approx(np.radians(233.13 - 360))
     assert wrap_into_limits(robot, [2.5, 0.0])[1] is False
+
+
+def test_moving_a_joint_never_moves_the_other_joint(pr_panel):
+    """Notebook 04: dragging q1 toward 0 flipped q2 from 30° to 150°, because the
+    browser echoed the (rounded) target sliders back into the IK. Here the echo is
+    emulated: after every move the target sliders are set to their rounded values."""
+    pr_panel.sliders[1].value = 30
+    pr_panel.sliders[0].value = 0.57
+    for q1 in np.linspace(0.56, 0.0, 29):
+        pr_panel.sliders[0].value = float(q1)
+        for slider in pr_panel.target_sliders:
+            slider.value = round(slider.value / slider.step) * slider.step
+        assert pr_panel.sliders[1].value == 30
+    assert pr_panel.branch == "A"
+
+
+def test_moving_the_target_keeps_the_branch_until_asked(pr_panel):
+    pr_panel.set_target(2.0, 0.25)
+    assert pr_panel.branch == "A" and np.degrees(pr_panel.q[1]) == pytest.approx(30)
+    x_slider, y_slider = pr_panel.target_sliders
+    for y in np.linspace(0.25, -0.4, 14):             # through y = 0 and below: still branch A
+        y_slider.value = float(y)
+        assert pr_panel.branch == "A"
+        assert abs(np.degrees(pr_panel.q[1])) <= 90 + 1e-9
+    pr_panel.branch_buttons.value = "B"              # the student asks for the other branch
+    assert pr_panel.branch == "B" and abs(np.degrees(pr_panel.q[1])) > 90
+    x_slider.value = 0.2                              # A needs q1 < 0 here: B stays, A is not taken
+    assert pr_panel.branch == "B"
+
+
+def test_stepthrough_starts_at_0_and_reads_steps_without_moving():
+    panel = stepthrough(theta_deg=90, d=1.0, a=0.5, alpha_deg=-90, i=2)
+    assert panel.slider.value == 0
+    for step in (1, 2, 3, 4):
+        np.testing.assert_allclose(panel.frame_at(step), dh_partial(np.pi / 2, 1.0, 0.5, -np.pi / 2, step))
+    assert panel.slider.value == 0

@@ -32,9 +32,9 @@ def test_nan_and_inf_are_named(puma):
 
 
 def test_not_numbers(puma):
-    with pytest.raises(DHLabError, match="must be numbers.*fk_sym"):
+    with pytest.raises(DHLabError, match=r"q\[0\] = 'a' is not a valid number: it is text"):
         puma.fk(["a", 0, 0, 0, 0, 0])
-    with pytest.raises(DHLabError, match="must be numbers"):
+    with pytest.raises(DHLabError, match="not a valid number.*fk_sym"):
         puma.fk(list(sp.symbols("q1:7")))
 
 
@@ -43,7 +43,7 @@ def test_degrees_passed_as_radians_are_refused(puma):
         puma.fk([0, 90, 0, 0, 0, 0])
     with pytest.raises(DHLabError, match=r"dhlab.deg\(45\)"):
         Rz(45)
-    with pytest.raises(DHLabError, match=r"alpha = 90 is not an angle in radians.*dhlab.deg\(90\)"):
+    with pytest.raises(DHLabError, match=r"alpha = 90 rad is more than a full turn.*dhlab.deg\(90\)"):
         dhlab.RevoluteDH(alpha=90)
     # the same values in radians are fine
     puma.fk(deg([0, 90, 0, 0, 0, 0]))

@@ -104,14 +104,13 @@ def test_triad_segments_are_right_handed_axes():
     assert np.isnan(x[2]).all()                                   # the separator
 
 
-def test_limits_are_fixed_equal_scaled_and_hold_the_robot():
+def test_fixed_framing_keeps_the_workspace_box():
     robot = robots.puma560()
-    view = robot_view(robot)
+    view = robot_view(robot, framing="fixed")
     lo, hi = workspace_box(robot)
     limits = [view.ax.get_xlim(), view.ax.get_ylim(), view.ax.get_zlim()]
     np.testing.assert_allclose(np.array(limits), np.column_stack([lo, hi]))
-    # equal scaling: the 3D box's sides are proportional to the data ranges
-    aspect = view.ax.get_box_aspect()
+    aspect = view.ax.get_box_aspect()              # equal scaling
     np.testing.assert_allclose(aspect / aspect.max(), (hi - lo) / (hi - lo).max(), rtol=1e-6)
     rng = np.random.default_rng(7)                                # other poses than the box's
     for _ in range(50):
@@ -120,11 +119,86 @@ def test_limits_are_fixed_equal_scaled_and_hold_the_robot():
         origins = robot.frames(q)[:, :3, 3]
         assert (origins >= lo - 1e-9).all() and (origins <= hi + 1e-9).all()
     assert [view.ax.get_xlim(), view.ax.get_ylim(), view.ax.get_zlim()] == limits   # never jumps
-    assert robot_view(robots.pr_mechanism()).ax.get_aspect() == 1.0
+
+
+@pytest.mark.parametrize("make", ROBOTS_3D + ROBOTS_2D, ids=lambda f: f.__name__)
+def test_follow_framing_fills_the_view_with_hysteresis(make):
+    """The robot fills its view; small moves keep the frame (no full redraw), a
+    large move re-frames (one full redraw); equal scaling always."""
+    robot = make()
+    view = robot_view(robot, backend="image")
+    view.live.png()
+    assert view.extent_fraction() >= 0.6
+    full_draws = []
+    view.figure.canvas.mpl_connect("draw_event", lambda event: full_draws.append(1))
+    limits = [view.ax.get_xlim(), view.ax.get_ylim()]
+    q = view.q.copy()
+    k = int(np.argmax([link.qlim[1] - link.qlim[0] for link in robot.links]))
+    step = 0.01 * (robot.links[k].qlim[1] - robot.links[k].qlim[0])
+    q[k] = np.clip(q[k] + step, *robot.links[k].qlim)
+    view.update(q)                                          # a small move
+    assert [view.ax.get_xlim(), view.ax.get_ylim()] == limits and not full_draws
+    rng = np.random.default_rng(2)
+    for _ in range(8):                                      # large moves
+        view.update(random_q(robot, rng))
+        assert view.extent_fraction() >= 0.4
+    if view.ax.name == "3d":
+        ranges = np.array([np.ptp(view.ax.get_xlim()), np.ptp(view.ax.get_ylim()), np.ptp(view.ax.get_zlim())])
+        aspect = view.ax.get_box_aspect()
+        np.testing.assert_allclose(aspect / aspect.max(), ranges / ranges.max(), rtol=1e-6)
+    else:
+        assert view.ax.get_aspect() == 1.0
+
+
+def test_frames_at_one_place_share_one_label_and_labels_can_hide():
+    view = robot_view(robots.puma560(), backend="image")          # spherical wrist: S4 = S5 = S6
+    view.live.png()
+    assert "$\\{S_{4},S_{5},S_{6}\\}$" in view.labels.texts
+    view.show_labels(False)
+    hidden = pixels(view)
+    view.show_labels(True)
+    assert (pixels(view) != hidden).any()
+
+
+def test_joint_axes_are_dashed_lines_along_z_of_each_joint():
+    robot = robots.ssrms()
+    view = robot_view(robot, joint_axes=True, backend="image")
+    points = np.column_stack(view.joint_axes_line.get_data_3d())
+    pieces = np.split(points, np.where(np.isnan(points).any(axis=1))[0])
+    pieces = [p[~np.isnan(p).any(axis=1)] for p in pieces if len(p[~np.isnan(p).any(axis=1)]) == 2]
+    assert len(pieces) == robot.n
+    for (a, b), frame in zip(pieces, view.frames[:robot.n]):
+        direction = (b - a) / np.linalg.norm(b - a)
+        assert abs(abs(direction @ frame[:3, 2]) - 1) < 1e-9        # along z_(i-1)
+        assert np.linalg.norm(np.cross(frame[:3, 3] - a, direction)) < 1e-6   # through origin i-1
+    assert view.joint_axes_line.get_linestyle() == "--"
+
+
+def test_camera_presets_and_zoom():
+    view = robot_view(robots.puma560(), backend="image")
+    for preset, (elev, azim) in {"front": (0, -90), "side": (0, 0), "top": (90, -90)}.items():
+        view.set_camera(preset)
+        assert (view.ax.elev, view.ax.azim) == (elev, azim)
+    view.set_camera("iso")
+    before = view.extent_fraction()
+    view.set_zoom(1.5)
+    assert view.extent_fraction() == pytest.approx(1.5 * before, rel=0.05)
+    with pytest.raises(dhlab.DHLabError):
+        view.set_camera("bottom")
+    with pytest.raises(dhlab.DHLabError):
+        view.set_zoom(0)
+
+
+def test_default_camera_reads_every_triad():
+    from dhlab.views.camera import triad_readability
+
+    for make in ROBOTS_3D:
+        view = robot_view(make(), backend="image")
+        assert triad_readability(view.frames, view.ax.elev, view.ax.azim).min() >= 1
 
 
 def test_update_really_draws_and_leaves_no_trail():
-    view = robot_view(robots.ssrms())
+    view = robot_view(robots.ssrms(), framing="fixed")
     qa, qb = dhlab.deg([10, 20, 30, 0, 0, 0, 0]), dhlab.deg([-40, 60, 10, 20, 30, 0, 0])
     view.update(qa)
     first = pixels(view)
@@ -137,7 +211,7 @@ def test_update_really_draws_and_leaves_no_trail():
 def test_blitted_frame_shows_the_robot_like_a_full_render():
     """What blitting paints equals a full redraw of the same figure, pixel for pixel
     except where the robot's strokes overlap the axes decorations' antialiasing."""
-    view = robot_view(robots.puma560(), backend="image")
+    view = robot_view(robots.puma560(), backend="image", framing="fixed")
     view.update(dhlab.deg([30, -40, 20, 10, 50, 0]))
     blitted = pixels(view).astype(int)
     for artist in view.live.moving:

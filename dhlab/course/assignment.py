@@ -328,23 +328,15 @@ def check_part(part: int, namespace) -> Feedback:
         raise DHLabError(f"the assignment has parts 1, 2 and 3 to check, not {part!r}.")
     if not hasattr(namespace, "keys"):
         raise DHLabError("pass the notebook's variables: check_part(1, globals()).")
-    answers = _answers.answers_from_namespace(namespace)
-    analysis = _checks._analyse(answers)
+    answers = _answers.answers_from_namespace(namespace)       # exactly as the grader reads them
     if part == 1:
         return Feedback(_checks.check_part1(answers))
-    part2 = _checks.check_part2(answers, analysis)
     if part == 2:
-        has_frames = any(analysis.valid[1:])
-        note = ("" if has_frames or not part2.answered else
-                "Checked against the DH rules (each link in some valid DH frame of it). After part 3, "
-                "each link is checked again in the frame your transformations build.")
-        return Feedback(part2, note=note)
+        return Feedback(_checks.check_part2(answers))
+    analysis = _checks._analyse(answers)
     part3 = _checks.check_part3(answers, analysis)
-    also = []
-    if part2.answered:
-        part2.notes.insert(0, "(part 2 checked again, in the frames your transformations build)")
-        also.append(part2)
-    return Feedback(part3, also=also)
+    notes = [n for n in _checks.check_part2(answers, analysis).notes if n.startswith("(not scored)")]
+    return Feedback(part3, note="\n".join(notes))
 
 
 def check_part1(namespace) -> Feedback:
@@ -417,11 +409,10 @@ def points_table() -> _Table:
 # --- figures ----------------------------------------------------------------------------------
 
 def _new_axes(figsize=(7.5, 6.5), ncols: int = 1):
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
+    """A course figure (a picture on a first Run All, inline or with ipympl) with 3D axes."""
+    from ..views.figures import new_figure
 
-    fig = Figure(figsize=figsize)
-    FigureCanvasAgg(fig)
+    fig = new_figure(figsize=figsize, layout=None)       # the layout is set by hand (3D axes)
     axes = [fig.add_subplot(1, ncols, c + 1, projection="3d") for c in range(ncols)]
     return fig, axes
 
@@ -431,6 +422,9 @@ def _square(ax, lo=(-0.35, -0.45, -0.7), hi=(0.65, 0.25, 0.6)):
            xlabel="$x_0$ [m]", ylabel="$y_0$ [m]", zlabel="$z_0$ [m]")
     ax.set_box_aspect(np.array(hi) - np.array(lo))
     ax.view_init(elev=18, azim=-65)
+    from matplotlib.ticker import MaxNLocator
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):          # a few ticks: no labels piled up
+        axis.set_major_locator(MaxNLocator(4))
 
 
 def _arc(axis_point, w, radius, start_dir):
@@ -568,10 +562,16 @@ def my_robot_figure(namespace, q=None):
     try:
         rows, points = _rows_from(namespace)
         robot = robot_of(namespace)
+        ref = _puma.reference()
+        q = np.radians([30, 20, -40, 45, 60, 90]) if q is None else np.asarray(q, float)
+        return _my_robot_figure(robot, points, ref, q)
     except DHLabError as e:
         return Note(str(e))
-    ref = _puma.reference()
-    q = np.radians([30, 20, -40, 45, 60, 90]) if q is None else np.asarray(q, float)
+    except (ValueError, ArithmeticError, IndexError, TypeError) as e:   # an answer matplotlib cannot draw
+        return Note(f"your robot cannot be drawn ({type(e).__name__}: {e}); check your answers first")
+
+
+def _my_robot_figure(robot, points, ref, q):
     fig, axs = _new_axes(figsize=(11, 5.5), ncols=2)
     for ax, pose, title in zip(axs, (np.zeros(6), q), ("home pose", "q = " + _xyz(np.degrees(q)) + "°")):
         R = ref.frames(pose[None])[0]
@@ -584,7 +584,8 @@ def my_robot_figure(namespace, q=None):
         ax.plot(*F[:, :3, 3].T, ":", color="C0", lw=1, label="your frame origins")
         _square(ax)
         ax.set_title(title)
-    axs[0].legend(loc="upper left", fontsize=7)
+    fig.legend(*axs[0].get_legend_handles_labels(), loc="lower center", ncol=3, fontsize=9, frameon=False)
+    fig.subplots_adjust(left=0.0, right=0.97, bottom=0.1, top=0.93, wspace=0.05)
     return fig
 
 
@@ -606,8 +607,15 @@ def teach(namespace, **options):
         if line is not None:
             line.set_data_3d(*_link_lines(robot.frames(q), points).T)
 
-    panel = _teach(robot, on_change=draw_links, **options)
-    state["line"], = panel.view.ax.plot([], [], [], "-", color="C3", lw=3, alpha=0.8)
-    panel.view.live.add_moving(state["line"])
-    panel.set_q(panel.q)
+    options.setdefault("planar", False)          # the PUMA is drawn in 3D, even when your answer is planar
+    try:
+        panel = _teach(robot, on_change=draw_links, **options)
+        state["line"], = panel.view.ax.plot([], [], [], "-", color="C3", lw=3, alpha=0.8)
+        panel.view.live.add_moving(state["line"])
+        panel.set_q(panel.q)
+    except DHLabError as e:
+        return Note(f"your robot cannot be shown in a teach panel: {e}")
+    except (ValueError, ArithmeticError, IndexError, TypeError) as e:   # an answer the views cannot draw
+        return Note(f"your robot cannot be shown in a teach panel ({type(e).__name__}: {e}); "
+                    "check your T1…T6 with check_part3 first")
     return panel

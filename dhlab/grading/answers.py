@@ -24,12 +24,13 @@ import re
 from dataclasses import dataclass, field
 
 __all__ = ["ANSWER_NAMES", "N_JOINTS", "NOT_ANSWERED", "Unreadable", "Answers", "Row", "Term",
-           "to_plain", "parse_answers", "parse_json", "answers_from_namespace", "MAX_JSON_BYTES"]
+           "to_plain", "encode_json", "parse_answers", "parse_json", "answers_from_namespace", "MAX_JSON_BYTES"]
 
 N_JOINTS = 6
 ANSWER_NAMES = ("n_links", "n_joints", "joint_types", "x_cases", "link_points",
                 *(f"T{i}" for i in range(1, N_JOINTS + 1)), "chain")
 MAX_JSON_BYTES = 1_000_000
+MAX_NUMBER = 1e6          # metres or degrees: anything bigger is a slip, and would overflow the checks
 
 
 class _NotAnswered:
@@ -144,16 +145,22 @@ def to_plain(value, _depth=0, _budget=None):
     if value is None or value is Ellipsis:
         return None
     if isinstance(value, bool):
-        return value
+        return bool(value)
+    # subclasses (numpy.float64, dhlab.deg() values, str subclasses) become the plain type, so
+    # that every numeric type a student may use is read the same way
     if isinstance(value, int):
+        value = int(value)
         return value if abs(value) < 10 ** 15 else float(value)
     if isinstance(value, float):
+        value = float(value)
         return value if value == value and abs(value) != float("inf") else {"__type__": "float", "repr": repr(value)}
     if isinstance(value, str):
-        return value[:300]
+        return str(value)[:300]
     kind = type(value)
     module = getattr(kind, "__module__", "") or ""
-    if module.startswith("numpy") and hasattr(value, "tolist"):
+    if getattr(value, "is_Integer", False) is True and module.startswith("sympy"):
+        return to_plain(int(value), _depth + 1, _budget)
+    if module.startswith(("numpy", "sympy")) and hasattr(value, "tolist"):
         if getattr(value, "size", 1) > 2000:
             return {"__type__": "too big", "repr": "an array of %s values" % getattr(value, "size", "?")}
         return to_plain(value.tolist(), _depth + 1, _budget)
@@ -195,10 +202,52 @@ def to_plain(value, _depth=0, _budget=None):
     return {"__type__": kind.__name__[:60], "repr": text}
 
 
+def encode_json(value) -> str:
+    """The JSON text of plain data, written by hand (self-contained, like :func:`to_plain`:
+    the runner sends both into the student's kernel, where ``json`` may have been replaced).
+    Anything that is not plain data becomes ``null``.
+
+    >>> encode_json({"a": [1, 2.5, "x", None, True]})
+    '{"a":[1,2.5,"x",null,true]}'
+    """
+    if value is None:
+        return "null"
+    if value is True or value is False:
+        return "true" if value else "false"
+    if type(value) is int:
+        return str(value)
+    if type(value) is float:
+        return repr(value) if value == value and abs(value) != float("inf") else "null"
+    if type(value) is str:
+        out = []
+        for ch in value:
+            code = ord(ch)
+            if 32 <= code < 127 and ch not in '"\\':
+                out.append(ch)
+            elif code < 0x10000:
+                out.append("\\u%04x" % code)
+            else:
+                code -= 0x10000
+                out.append("\\u%04x\\u%04x" % (0xD800 + (code >> 10), 0xDC00 + (code & 0x3FF)))
+        return '"' + "".join(out) + '"'
+    if type(value) is list:
+        return "[" + ",".join(encode_json(v) for v in value) + "]"
+    if type(value) is dict:
+        return "{" + ",".join(encode_json(str(k)) + ":" + encode_json(v) for k, v in value.items()) + "}"
+    return "null"
+
+
 def answers_from_namespace(namespace) -> Answers:
-    """The answers in a namespace (the notebook's globals), through the same plain data."""
-    raw = {name: to_plain(namespace[name]) for name in ANSWER_NAMES if name in namespace}
-    return parse_answers(json.loads(json.dumps(raw)))
+    """The answers in a namespace (the notebook's globals), read exactly as the grader reads
+    them: :func:`to_plain`, then :func:`encode_json`, then :func:`parse_json`."""
+    raw = {}
+    for name in ANSWER_NAMES:
+        if name in namespace:
+            try:
+                raw[name] = to_plain(namespace[name])
+            except BaseException as e:          # the same as the runner's writer
+                raw[name] = {"__type__": "unreadable", "repr": (type(e).__name__ + ": " + str(e))[:200]}
+    return parse_json(encode_json(raw))
 
 
 # --- in the grader: JSON -> Answers ----------------------------------------------------
@@ -289,6 +338,8 @@ def _number(value, what: str) -> float:
     number = float(value)
     if not math.isfinite(number):
         raise _Bad(f"{what} must be a finite number, got {value}")
+    if abs(number) > MAX_NUMBER:
+        raise _Bad(f"{what} is {number:g}: no length (metres) or angle (degrees) of this robot is that big")
     return number
 
 
@@ -365,6 +416,10 @@ def _x_cases(value) -> list:
 
 
 def _point(value, where: str) -> tuple:
+    if isinstance(value, list) and len(value) in (3, 4) and all(isinstance(v, list) and len(v) == 1 for v in value):
+        value = [v[0] for v in value]                  # a column (3x1 array or sympy Matrix)
+    if isinstance(value, list) and len(value) == 4 and value[3] in (1, 1.0):
+        raise _Bad(f"{where} has 4 numbers; a point has 3: drop the trailing 1 of the homogeneous form")
     if not isinstance(value, list) or len(value) != 3:
         raise _Bad(f"{where} must be a point (x, y, z), got {_show(value)}")
     return tuple(_number(v, where) for v in value)

@@ -1,63 +1,53 @@
 """Grade a folder of submitted PUMA notebooks: ``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv``.
 
-    dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv [-j N] [--timeout S]
+    dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv [-j N] [--timeout S] [--resume]
     python -m dhlab.grading.cli puma SUBMISSIONS_DIR ...          (the same)
 
 Every ``*.ipynb`` under SUBMISSIONS_DIR (any depth, e.g. nbgrader's
-``submitted/<student>/<assignment>/``) is one submission. Each one is run by its
-own runner process (:mod:`dhlab.grading.runner`) in a fresh kernel with a time
-limit per cell (``--timeout``), a limit for the whole notebook, a memory limit and
-an output limit; ``-j N`` runs N at a time. The runner only returns the student's
-answers as plain data; they are scored **here**, in the grader's process, by
-:mod:`dhlab.grading.checks`.
+``submitted/<student>/<assignment>/``) is one submission. What happens:
 
-Written: the gradebook CSV (submission, score, max_score, status, one column per
-part, seconds, feedback), and one feedback file per submission in a folder beside
-it (``gradebook_feedback/`` for ``gradebook.csv``). A submission that raises,
-hangs, floods its output, runs out of memory, is not a notebook, or tampers with
-dhlab gets the marks its real answers earn and a reason in ``status``; it never
-stops the batch. The gradebook is written atomically, at the end.
+1. **Every submission is copied first**, without its outputs (:mod:`dhlab.grading.staging`),
+   into a folder only the grader can enter; nothing runs before all are copied.
+2. Each copy is run by its own runner process (:mod:`dhlab.grading.runner`) in a fresh
+   kernel with a time limit per cell (``--timeout``), a limit for the whole notebook, a
+   memory limit and an output limit; ``-j N`` runs N at a time. As root, each kernel
+   runs as an unprivileged user of its own, in its own folder
+   (:mod:`dhlab.grading.isolation`), and every process of that user is killed afterwards.
+3. The runner only returns the student's answers as plain data; they are scored
+   **here**, in the grader's process, by :mod:`dhlab.grading.checks`.
+4. Before and after each submission the whole installed ``dhlab`` is checked
+   unchanged; if it changed, the grader stops with a message (the rows it can
+   trust are kept).
+5. The gradebook CSV is rewritten atomically after every submission (submission,
+   score, max_score, status, one column per part, seconds, feedback file, the file
+   and its SHA-256), so a grader killed mid-batch keeps every finished row, and
+   ``--resume`` grades only what is missing (or changed). One feedback file per
+   submission goes to a folder beside it (``gradebook_feedback/``).
+
+A submission that raises, hangs, floods its output, runs out of memory, is not a
+notebook, or tampers with dhlab gets the marks its real answers earn and a reason in
+``status``; it never stops the batch.
 """
 from __future__ import annotations
 
 import argparse
 import concurrent.futures
-import hashlib
 import json
 import os
+import secrets
 import signal
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from pathlib import Path
 
-__all__ = ["main", "grade_submission", "find_submissions"]
+from .staging import find_submissions
+
+__all__ = ["main", "grade_submission", "find_submissions", "run_submission"]
 
 ASSIGNMENTS = ("puma",)
-
-
-def find_submissions(folder: Path) -> list:
-    """Every notebook under ``folder``, skipping checkpoints and hidden folders."""
-    out = []
-    for path in sorted(folder.rglob("*.ipynb")):
-        parts = path.relative_to(folder).parts
-        if any(p.startswith(".") for p in parts) or path.is_symlink() or not path.is_file():
-            continue
-        out.append(path)
-    return out
-
-
-def _dhlab_fingerprint() -> str:
-    """A hash of the files the grading reads from disk while it runs (the runner, the
-    kernel's launcher, the answers' reader): a submission must not be able to change them.
-    The checks themselves are loaded into this process before any submission runs."""
-    from . import runner
-    h = hashlib.sha256()
-    for path in sorted(runner.RUNNER.parent.glob("*.py")):
-        h.update(path.name.encode())
-        h.update(path.read_bytes())
-    return h.hexdigest()
 
 
 def _kill_kernel(pid_file: Path) -> None:
@@ -74,44 +64,64 @@ def _kill_kernel(pid_file: Path) -> None:
             pass
 
 
-def run_submission(path: Path, options, retries: int = 2) -> dict:
-    """Run one notebook in a runner process; the runner's result (a dict).
+def run_submission(staged, options, iso=None, hide=(), retries: int = 2) -> dict:
+    """Run one staged notebook in a runner process; the runner's result (a dict).
 
-    If the runner process itself dies (a notebook can kill its kernel's parent), the
-    notebook is run again without the cell that was running, at most ``retries`` times.
+    If the runner process itself dies (a notebook can kill its kernel's parent when it
+    runs as the grader's user), the notebook is run again without the cell that was
+    running, at most ``retries`` times. Afterwards every process the submission started
+    is ended and its folder removed.
     """
-    killed = []
-    for attempt in range(retries + 1):
-        run, cell = _run_once(path, options, skip=killed)
-        if not run.get("grader_error") or cell is None or cell in killed or attempt == retries:
-            break
-        killed.append(cell)
-    if killed and not run.get("grader_error"):
-        run["runner_killed"] = killed
-    elif killed:
-        run["grader_error"] += f" (also in a run without cell {', '.join(map(str, killed))})"
-    return run
+    from .isolation import setup
+    iso = iso or setup(1, "none")
+    user = iso.acquire()
+    token = secrets.token_hex(12)
+    workdir = iso.workdir(user)
+    try:
+        killed = []
+        for attempt in range(retries + 1):
+            run, cell = _run_once(staged.copy, options, skip=killed, user=user, workdir=workdir, token=token,
+                                  hide=hide)
+            if not run.get("grader_error") or cell is None or cell in killed or attempt == retries:
+                break
+            killed.append(cell)
+            iso.cleanup(user, Path("/nonexistent"), token)
+        if killed and not run.get("grader_error"):
+            run["runner_killed"] = killed
+        elif killed:
+            run["grader_error"] += f" (also in a run without cell {', '.join(map(str, killed))})"
+        return run
+    finally:
+        iso.cleanup(user, workdir, token)
+        iso.release(user)
 
 
-def _run_once(path: Path, options, skip) -> tuple:
+def _run_once(copy: Path, options, skip, user=None, workdir=None, token="", hide=()) -> tuple:
     """(result dict, the cell that was running when the runner stopped or None)."""
     from .runner import RUNNER
     with tempfile.TemporaryDirectory(prefix="dhlab-grade-") as tmp:
         tmp = Path(tmp)
         result, pid_file, log = tmp / "result.json", tmp / "kernel.pid", tmp / "runner.log"
         progress = tmp / "progress"
-        cmd = [sys.executable, str(RUNNER), str(path), str(result),
+        cmd = [sys.executable, "-B", str(RUNNER), str(copy), str(result),
                "--timeout", str(options.timeout), "--total-timeout", str(options.total_timeout),
                "--memory-mb", str(options.memory_mb), "--output-mb", str(options.output_mb),
-               "--pid-file", str(pid_file), "--progress-file", str(progress)]
+               "--pid-file", str(pid_file), "--progress-file", str(progress), "--token", token]
+        if workdir is not None:
+            cmd += ["--workdir", str(workdir)]
+        if user is not None:
+            cmd += ["--uid", str(user[1]), "--gid", str(user[2])]
+            cmd += [a for folder in hide for a in ("--hide", str(folder))]
         for cell in skip:
             cmd += ["--skip", str(cell)]
         hard_limit = options.total_timeout + 150          # kernel starts and the answers' read
+        env = dict(os.environ, TMPDIR=str(tmp), JUPYTER_RUNTIME_DIR=str(tmp / "runtime"),
+                   PYTHONDONTWRITEBYTECODE="1")
         with open(log, "wb") as err:
-            # TMPDIR: the runner's working folder, the kernel's connection file and the notebook's
-            # own temporary files all land in this folder, which goes away even if the runner is killed
+            # TMPDIR: the runner's own files (connection file, kernel spec) land in this private
+            # folder, which goes away even if the runner is killed
             proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=err,
-                                    start_new_session=True, env=dict(os.environ, TMPDIR=str(tmp)))
+                                    start_new_session=True, env=env)
             try:
                 proc.wait(timeout=hard_limit)
             except subprocess.TimeoutExpired:
@@ -119,6 +129,10 @@ def _run_once(path: Path, options, skip) -> tuple:
                 proc.wait()
             finally:
                 _kill_kernel(pid_file)
+                try:
+                    os.killpg(proc.pid, signal.SIGKILL)          # whatever is left of the runner's session
+                except (ProcessLookupError, PermissionError):
+                    pass
         if result.exists():
             try:
                 return json.loads(result.read_text(encoding="utf-8")), None
@@ -136,15 +150,20 @@ def _run_once(path: Path, options, skip) -> tuple:
         return {"grader_error": why + (f": {tail[0][:150]}" if tail else "")}, cell
 
 
-def grade_submission(path: Path, folder: Path, options) -> dict:
+def grade_submission(staged, options, iso=None, hide=()) -> dict:
     """Run, read the answers, score in this process: one gradebook row (+ feedback text)."""
     from . import checks
     from .answers import Answers, Unreadable, parse_json
     from .gradebook import PART_COLUMNS, feedback_filename, feedback_text, status_text
 
     started = time.monotonic()
-    submission = path.relative_to(folder).with_suffix("").as_posix()
-    run = run_submission(path, options)
+    if staged.copy is None:
+        run = {"notebook_error": staged.error}
+    else:
+        run = run_submission(staged, options, iso, hide)
+    run["file"] = staged.file
+    if iso is not None and iso.note():
+        run["isolation_note"] = iso.note()
     answers, problem = Answers(), ""
     if run.get("answers_json"):
         try:
@@ -156,24 +175,23 @@ def grade_submission(path: Path, folder: Path, options) -> dict:
     if unreadable and not problem:
         problem = f"unreadable answers: {', '.join(unreadable)}"
     status = status_text(run, report_answered=answers.answered(), answers_problem=problem)
-    row = {"submission": submission, "score": f"{report.score:g}", "max_score": report.max_score,
+    row = {"submission": staged.submission, "score": f"{report.score:g}", "max_score": report.max_score,
            "status": status, "seconds": f"{time.monotonic() - started:.1f}",
-           "feedback": feedback_filename(submission)}
+           "feedback": feedback_filename(staged.submission), "file": staged.file, "sha256": staged.sha256}
     for part in report.parts:
         row[PART_COLUMNS[part.key]] = f"{part.score:g}"
-    row["_feedback_text"] = feedback_text(submission, run, report, status)
+    row["_feedback_text"] = feedback_text(staged.submission, run, report, status)
     return row
 
 
-def _error_row(path, folder, exc) -> dict:
+def _error_row(staged, exc) -> dict:
     """The row of a submission the grader itself failed on (it keeps the batch going)."""
     from .checks import POINTS
     from .gradebook import PART_COLUMNS, feedback_filename
-    submission = path.relative_to(folder).with_suffix("").as_posix()
     status = f"grader error: {type(exc).__name__}: {str(exc)[:150]}"
-    row = {"submission": submission, "score": "0", "max_score": sum(POINTS.values()), "status": status, "seconds": "0",
-           "feedback": feedback_filename(submission),
-           "_feedback_text": f"Submission: {submission}\nStatus: {status}\n"}
+    row = {"submission": staged.submission, "score": "0", "max_score": sum(POINTS.values()), "status": status,
+           "seconds": "0", "feedback": feedback_filename(staged.submission), "file": staged.file,
+           "sha256": staged.sha256, "_feedback_text": f"Submission: {staged.submission}\nStatus: {status}\n"}
     row.update({c: "0" for c in PART_COLUMNS.values()})
     return row
 
@@ -226,6 +244,77 @@ def _summary(rows, seconds, jobs) -> str:
         "Status: " + ", ".join(f"{label} {c}" for label, c in counts.items() if c)])
 
 
+class _Batch:
+    """The rows of one batch, the gradebook rewritten after each, and the package watch."""
+
+    def __init__(self, options, feedback_dir, rows, fingerprint_now):
+        self.options, self.feedback_dir = options, feedback_dir
+        self.rows = {r["submission"]: r for r in rows}
+        self.lock = threading.Lock()
+        self.fingerprint = fingerprint_now
+        self.expected = fingerprint_now()
+        self.checked_ok = time.monotonic()          # when the package was last seen unchanged
+        self.stop = threading.Event()
+        self.refusal = ""
+        self.discarded = []
+
+    def package_unchanged(self) -> bool:
+        from .isolation import changed_files
+        with self.lock:
+            if self.stop.is_set():
+                return False
+            now = self.fingerprint()
+            if now == self.expected:
+                self.checked_ok = time.monotonic()
+                return True
+            self.stop.set()
+            changed = changed_files(self.expected, now)
+            self.refusal = (f"dhlab's installed files changed during the batch ({', '.join(changed[:5])}"
+                            f"{', …' if len(changed) > 5 else ''}: did a submission write to them?). "
+                            "The grader stopped: reinstall dhlab (pip install --force-reinstall, or git checkout "
+                            "of the package), then run the same command with --resume.")
+            # every row that ran since the package was last seen unchanged cannot be trusted
+            for name, row in list(self.rows.items()):
+                if row.get("_started", -1) >= 0 and row["_ended"] > self.checked_ok:
+                    self.discarded.append(name)
+                    del self.rows[name]
+            self._write()
+            return False
+
+    def add(self, row, started, ended) -> None:
+        from .gradebook import write_atomic
+        with self.lock:
+            text = row.pop("_feedback_text")
+            if self.stop.is_set():
+                self.discarded.append(row["submission"])
+                return
+            row["_started"], row["_ended"] = started, ended
+            write_atomic(self.feedback_dir / row["feedback"], text)
+            self.rows[row["submission"]] = row
+            self._write()
+
+    def _write(self) -> None:
+        from .gradebook import write_csv
+        write_csv(self.options.output, self.rows.values())
+
+
+def _grade_one(batch, staged, iso, hide):
+    """One task of the pool: check the package, grade, check again, keep the row."""
+    if not batch.package_unchanged():
+        return None
+    started = time.monotonic()
+    try:
+        row = grade_submission(staged, batch.options, iso, hide)
+    except Exception as exc:                      # never stop the batch
+        row = _error_row(staged, exc)
+    ended = time.monotonic()
+    if not batch.package_unchanged():
+        batch.discarded.append(staged.submission)
+        return None
+    batch.add(row, started, ended)
+    return row
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="dhlab-grade", description=__doc__.splitlines()[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -240,6 +329,11 @@ def main(argv=None) -> int:
     parser.add_argument("--output-mb", type=float, default=10, help="output per cell before it is stopped, MB")
     parser.add_argument("--feedback-dir", type=Path, default=None,
                         help="folder for the feedback files (default: beside the CSV, <name>_feedback)")
+    parser.add_argument("--resume", action="store_true",
+                        help="keep the rows of an existing gradebook and grade only the missing or changed files")
+    parser.add_argument("--isolation", choices=("auto", "user", "none"), default="auto",
+                        help="auto (default): a user per job when run as root, else none; user: refuse to "
+                             "grade without it; none: kernels run as the grader's user")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     options = parser.parse_args(argv)
     if options.jobs < 1 or options.timeout <= 0 or options.memory_mb < 256:
@@ -255,31 +349,54 @@ def main(argv=None) -> int:
     feedback_dir = options.feedback_dir or options.output.with_name(options.output.stem + "_feedback")
 
     from . import checks
-    from .gradebook import write_atomic, write_csv
+    from .gradebook import read_csv
+    from .isolation import file_digests, setup
+    from .staging import stage_all
     checks.check_all(checks.Answers())            # build the reference before any student code runs
 
-    fingerprint = _dhlab_fingerprint()
-    started = time.monotonic()
-    progress = Progress(len(paths), quiet=options.quiet)
-    rows = []
-    with concurrent.futures.ThreadPoolExecutor(max_workers=options.jobs) as pool:
-        futures = {pool.submit(grade_submission, p, folder, options): p for p in paths}
-        for future in concurrent.futures.as_completed(futures):
-            try:
+    copies, staged = stage_all(folder, paths)     # every submission copied before any runs
+    try:
+        try:
+            iso = setup(options.jobs, options.isolation)
+        except OSError as e:
+            print(f"dhlab-grade: cannot isolate the submissions: {e}", file=sys.stderr)
+            return 4
+        if iso.why:
+            print(f"Note: {iso.note()}", file=sys.stderr)
+        feedback_dir.mkdir(parents=True, exist_ok=True)
+        old = read_csv(options.output) if options.resume else []
+        current = {(s.submission, s.sha256) for s in staged}
+        keep = [r for r in old if (r["submission"], r["sha256"]) in current]    # unchanged since graded
+        done = {(r["submission"], r["sha256"]) for r in keep}
+        todo = [s for s in staged if (s.submission, s.sha256) not in done]
+        batch = _Batch(options, feedback_dir, keep, file_digests)
+        batch._write()
+        hide = [folder.resolve()]
+        started = time.monotonic()
+        progress = Progress(len(todo), quiet=options.quiet)
+        graded = []
+        with concurrent.futures.ThreadPoolExecutor(max_workers=iso.jobs) as pool:
+            futures = [pool.submit(_grade_one, batch, s, iso, hide) for s in todo]
+            for future in concurrent.futures.as_completed(futures):
                 row = future.result()
-            except Exception as exc:              # never stop the batch
-                row = _error_row(futures[future], folder, exc)
-            write_atomic(feedback_dir / row["feedback"], row.pop("_feedback_text"))
-            rows.append(row)
-            progress.step(row)
-    write_csv(options.output, rows)
-    elapsed = time.monotonic() - started
-    print(_summary(rows, elapsed, options.jobs), file=sys.stderr)
+                if row is not None:
+                    graded.append(row)
+                    progress.step(row)
+        elapsed = time.monotonic() - started
+    finally:
+        import shutil
+        shutil.rmtree(copies, ignore_errors=True)
+        if "iso" in locals() and iso.base is not None:
+            shutil.rmtree(iso.base, ignore_errors=True)
+    if graded:
+        print(_summary(graded, elapsed, iso.jobs), file=sys.stderr)
+    if keep:
+        print(f"Resumed: {len(keep)} row{'s' if len(keep) != 1 else ''} kept from {options.output}.", file=sys.stderr)
     print(f"Gradebook: {options.output}  Feedback: {feedback_dir}/", file=sys.stderr)
-    if _dhlab_fingerprint() != fingerprint:
-        print("WARNING: dhlab's own files changed while grading (did a submission write to them?). "
-              "Reinstall dhlab and grade again.", file=sys.stderr)
-        return 1
+    if batch.refusal:
+        left = sorted(set(batch.discarded) | {s.submission for s in todo if s.submission not in batch.rows})
+        print(f"STOPPED: {batch.refusal}\nNot graded ({len(left)}): {', '.join(left[:20])}", file=sys.stderr)
+        return 3
     return 0
 
 

@@ -1,8 +1,13 @@
 """Make the student notebook from the source (solutions) notebook, the way nbgrader does.
 
-    python -m dhlab.grading.generate                      # notebooks/source/08_… -> notebooks/08_…
+    python -m dhlab.grading.generate                      # the course's source -> notebooks/08_…
     python -m dhlab.grading.generate SOURCE -o STUDENT
     python -m dhlab.grading.generate --check              # exit 1 if the student notebook is out of date
+
+The course's source (solutions) notebook is package data, ``dhlab/grading/data/
+08_puma_assignment.ipynb``: outside ``notebooks/``, so students never see it in
+the course's file browser (``make lab``). Teachers open it from there (or copy it
+into their nbgrader course).
 
 The source notebook is marked exactly as for nbgrader, so a teacher who uses
 nbgrader can drop it into ``source/<assignment>/`` and run ``nbgrader
@@ -55,7 +60,7 @@ NBGRADER_KEYS = {"grade", "solution", "locked", "task", "grade_id", "points", "s
                  "checksum", "cell_type"}
 
 _ROOT = Path(__file__).resolve().parents[2]
-SOURCE = _ROOT / "notebooks" / "source" / "08_puma_assignment.ipynb"
+SOURCE = Path(__file__).resolve().with_name("data") / "08_puma_assignment.ipynb"
 STUDENT = _ROOT / "notebooks" / "08_puma_assignment.ipynb"
 
 
@@ -188,10 +193,13 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("source", nargs="?", type=Path, default=SOURCE)
     parser.add_argument("-o", "--output", type=Path, default=None,
-                        help="the student notebook (default: notebooks/<name> for the course's source)")
+                        help="the student notebook (default: notebooks/08_puma_assignment.ipynb for the "
+                             "course's source; required for any other source)")
     parser.add_argument("--check", action="store_true", help="only check that the student notebook is up to date")
     args = parser.parse_args(argv)
-    output = args.output or (STUDENT if args.source.resolve() == SOURCE else args.source.parent.parent / args.source.name)
+    if args.output is None and args.source.resolve() != SOURCE:
+        parser.error("give -o STUDENT.ipynb for a source other than the course's")
+    output = args.output or STUDENT
     try:
         ok = generate(args.source, output, check=args.check)
     except GenerateError as e:

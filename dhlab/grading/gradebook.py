@@ -2,7 +2,13 @@
 
 A file is written to a temporary name in the same folder and then renamed over the
 old one (:func:`os.replace`), so a reader — or a second grading run — never sees a
-half-written gradebook, even if the grader is stopped in the middle.
+half-written gradebook, even if the grader is stopped in the middle. The grader
+rewrites the gradebook after **every** submission, so a batch that is killed keeps
+every finished row, and ``--resume`` (:func:`read_csv`) continues from them.
+
+Each row names the submitted file (``file``), its SHA-256 and its feedback file,
+whose name is made safe and unique by a hash of the submission's path
+(:func:`feedback_filename`): two students never share a feedback file.
 
 >>> status_text({"errors": [[4, "NameError", "name 'T9' is not defined"]]}, report_answered=True)
 "error in cell 4 (NameError: name 'T9' is not defined)"
@@ -10,17 +16,20 @@ half-written gradebook, even if the grader is stopped in the middle.
 from __future__ import annotations
 
 import csv
+import hashlib
 import io
 import os
 import re
 import tempfile
+import unicodedata
 from pathlib import Path
 
-__all__ = ["COLUMNS", "PART_COLUMNS", "write_atomic", "write_csv", "feedback_filename", "status_text",
+__all__ = ["COLUMNS", "PART_COLUMNS", "write_atomic", "write_csv", "read_csv", "feedback_filename", "status_text",
            "feedback_text"]
 
 PART_COLUMNS = {"part1": "part1_sketch", "part2": "part2_links", "part3": "part3_transforms"}
-COLUMNS = ["submission", "score", "max_score", "status", *PART_COLUMNS.values(), "seconds", "feedback"]
+COLUMNS = ["submission", "score", "max_score", "status", *PART_COLUMNS.values(), "seconds", "feedback",
+           "file", "sha256"]
 
 
 def write_atomic(path, text: str) -> None:
@@ -49,10 +58,32 @@ def write_csv(path, rows) -> None:
     write_atomic(path, buffer.getvalue())
 
 
+def read_csv(path) -> list:
+    """The rows of an existing gradebook (for ``--resume``); [] when there is none or it
+    is not a gradebook of these columns."""
+    try:
+        with open(path, newline="", encoding="utf-8") as f:
+            reader = csv.DictReader(f)
+            if reader.fieldnames != COLUMNS:
+                return []
+            return [dict(row) for row in reader]
+    except (OSError, csv.Error, UnicodeDecodeError):
+        return []
+
+
 def feedback_filename(submission: str) -> str:
-    """A safe file name for a submission's feedback: 'alice/ps1/puma' -> 'alice__ps1__puma.txt'."""
-    name = re.sub(r"[^A-Za-z0-9._-]+", "_", submission.replace("/", "__")).strip("._") or "submission"
-    return name[:150] + ".txt"
+    """A safe, unique file name for a submission's feedback: readable letters of its path
+    and 8 hex digits of its hash (so 'Ana María' and 'Ana_María' get different files,
+    on any file system, case-insensitive ones included).
+
+    >>> feedback_filename("alice/ps1/puma")
+    'alice__ps1__puma-a78cf37e.txt'
+    """
+    text = unicodedata.normalize("NFKD", submission)
+    text = "".join(ch for ch in text if not unicodedata.combining(ch))
+    name = re.sub(r"[^A-Za-z0-9._-]+", "_", text.replace("/", "__")).strip("._") or "submission"
+    digest = hashlib.sha256(submission.encode("utf-8", "surrogateescape")).hexdigest()[:8]
+    return f"{name[:120]}-{digest}.txt"
 
 
 def _cells(numbers) -> str:
@@ -97,12 +128,15 @@ def status_text(run: dict, report_answered: bool, answers_problem: str = "") -> 
         reasons.append(f"modifies dhlab, ignored ({run['tampering'][0]})")
     if not report_answered and not run.get("notebook_error"):
         reasons.append("not answered")
-    return "; ".join(reasons) or "ok"
+    status = "; ".join(reasons) or "ok"
+    if run.get("isolation_note"):
+        status += f" ({run['isolation_note']})"
+    return status
 
 
 def feedback_text(submission: str, run: dict, report, status: str) -> str:
     """The feedback file of one submission: the score, what happened, every check."""
-    lines = [f"Submission: {submission}", f"Status: {status}", ""]
+    lines = [f"Submission: {submission}", f"File: {run.get('file', submission + '.ipynb')}", f"Status: {status}", ""]
     lines.append(report.text())
     details = []
     for number, ename, evalue in run.get("errors", []):

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import functools
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -80,6 +80,9 @@ class Reference:
     wrist_centre: np.ndarray
     points: list                  # per link k: list of (label, world xyz at home)
     home_frames: np.ndarray       # (n+1, 4, 4) reference DH frames at home
+    link_names: list = field(default_factory=lambda: list(LINK_NAMES))
+    name: str = "PUMA 560"
+    _families: dict = field(default_factory=dict, repr=False, compare=False)
 
     @property
     def n(self) -> int:
@@ -180,6 +183,13 @@ def _any_perpendicular(z) -> np.ndarray:
 
 
 def frame_family(ref: Reference, k: int) -> FrameFamily:
+    """The valid DH frames of link k (computed once per reference robot)."""
+    if k not in ref._families:
+        ref._families[k] = _frame_family(ref, k)
+    return ref._families[k]
+
+
+def _frame_family(ref: Reference, k: int) -> FrameFamily:
     """The valid DH frames for link k at the home pose.
 
     Frame 0 is the pictured world frame (fixed). For 1 ≤ k < n: z_k along the axis
@@ -220,20 +230,29 @@ def rotation_angle(R1, R2) -> float:
 
 
 def nearest_valid_frame(ref: Reference, k: int, F) -> tuple:
-    """The valid DH frame k nearest to ``F`` (home pose): (frame, angle°, distance m)."""
+    """The valid DH frame k nearest to ``F`` (home pose): (frame, angle°, distance m).
+
+    Worked in each base frame's coordinates (a rigid motion keeps angles and distances),
+    so only the winner is built as a matrix.
+    """
     family = frame_family(ref, k)
+    F = np.asarray(F, float)
     best = None
     for base in family.bases:
-        local = np.linalg.inv(base) @ F
-        phi = math.atan2(local[1, 0], local[0, 0]) if family.spin else 0.0
-        t = local[2, 3] if family.shift else 0.0
-        C = _member(base, phi, t)
-        angle = rotation_angle(C[:3, :3], F[:3, :3])
-        dist = float(np.linalg.norm(C[:3, 3] - F[:3, 3]))
+        Rb, ob = base[:3, :3], base[:3, 3]
+        L = (Rb.T @ F[:3, :3]).tolist()
+        o = (Rb.T @ (F[:3, 3] - ob)).tolist()
+        phi = math.atan2(L[1][0], L[0][0]) if family.spin else 0.0
+        t = o[2] if family.shift else 0.0
+        c, s_ = math.cos(phi), math.sin(phi)
+        trace = c * (L[0][0] + L[1][1]) + s_ * (L[1][0] - L[0][1]) + L[2][2]
+        angle = math.degrees(math.acos(max(-1.0, min(1.0, (trace - 1) / 2))))
+        dist = math.sqrt(o[0] ** 2 + o[1] ** 2 + (o[2] - t) ** 2)
         score = math.radians(angle) + dist / 0.1
         if best is None or score < best[0]:
-            best = (score, C, angle, dist)
-    return best[1], best[2], best[3]
+            best = (score, base, phi, t, angle, dist)
+    _, base, phi, t, angle, dist = best
+    return _member(base, phi, t), angle, dist
 
 
 def is_valid_frame(ref: Reference, k: int, F) -> bool:
@@ -269,10 +288,10 @@ def fit_link(ref: Reference, k: int, local_points) -> tuple:
 
 # --- other valid answers: the free choices of the DH convention ------------------------------
 
-def random_valid_frames(rng) -> list:
+def random_valid_frames(rng, ref: Reference | None = None) -> list:
     """A random valid set of DH frames 0…n at home: each frame a random member of its
     family (signs of z and x, origins slid along parallel axes, the last x turned)."""
-    ref = reference()
+    ref = ref or reference()
     frames = []
     for k in range(ref.n + 1):
         family = frame_family(ref, k)
@@ -283,7 +302,7 @@ def random_valid_frames(rng) -> list:
     return frames
 
 
-def dh_rows_from_frames(frames) -> list:
+def dh_rows_from_frames(frames, ref: Reference | None = None) -> list:
     """The DH rows that carry ``frames`` (home pose) into each other, with the joint
     variables of the PUMA: per link ``(sign, θ0°, d, a, α°)`` meaning
     ``T_i = Tz[sign·q_i + θ0, d]·Tx[α, a]``; sign = −1 where z_{i−1} points against
@@ -293,7 +312,7 @@ def dh_rows_from_frames(frames) -> list:
     >>> [tuple(round(v, 5) + 0.0 for v in row) for row in rows][:3]
     [(1.0, 0.0, 0.0, 0.0, 90.0), (1.0, 0.0, 0.0, 0.4318, 0.0), (1.0, 0.0, 0.15005, 0.0203, -90.0)]
     """
-    ref = reference()
+    ref = ref or reference()
     rows = []
     for k in range(1, len(frames)):
         A = np.linalg.inv(frames[k - 1]) @ frames[k]

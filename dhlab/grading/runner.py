@@ -4,6 +4,7 @@ The grader starts one runner process per submission::
 
     python dhlab/grading/runner.py NOTEBOOK RESULT.json [--timeout 30] [--total-timeout 120]
                                    [--memory-mb 2048] [--output-mb 10]
+                                   [--uid U --gid G --workdir DIR --hide FOLDER --token T]
     (python -m dhlab.grading.runner ... works too)
 
 What it does, and why:
@@ -11,7 +12,11 @@ What it does, and why:
 1. Reads the notebook as JSON (a file that is not JSON, or not a notebook, is reported,
    not run).
 2. Starts a **fresh kernel** through :mod:`dhlab.grading.sandbox`, which lowers the
-   kernel's resource limits (memory, CPU, file size) before IPython starts.
+   kernel's resource limits (memory, CPU, file size) before IPython starts and, with
+   ``--uid``, makes the kernel an unprivileged user in its own mount namespace (the
+   runner itself stays the grader's user, so the kernel cannot signal it or forge its
+   result). The kernel's environment names no file of the grader: only an opaque
+   ``DHLAB_GRADE_TOKEN``.
 3. Runs every code cell in order, as the student would with "Run all". A cell that
    raises does not stop the others (its error is recorded). A cell that runs longer
    than ``--timeout`` seconds is interrupted. If the kernel dies, cannot be
@@ -43,14 +48,14 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 try:
-    from .answers import ANSWER_NAMES, MAX_JSON_BYTES, to_plain
+    from .answers import ANSWER_NAMES, MAX_JSON_BYTES, encode_json, to_plain
     from .sandbox import OUTPUT_LIMIT_NOTE, apply_limits
 except ImportError:      # started as a script by the grader (see RUNNER below)
-    from answers import ANSWER_NAMES, MAX_JSON_BYTES, to_plain
+    from answers import ANSWER_NAMES, MAX_JSON_BYTES, encode_json, to_plain
     from sandbox import OUTPUT_LIMIT_NOTE, apply_limits
 
 __all__ = ["RunResult", "run_notebook", "read_code_cells", "scan_for_tampering", "main",
-           "NotebookError", "MAX_NOTEBOOK_BYTES"]
+           "NotebookError", "MAX_NOTEBOOK_BYTES", "MAX_CODE_BYTES"]
 
 # The grader starts this file, and the kernel's launcher, as scripts (python .../runner.py),
 # not with -m: so these processes do not import the whole dhlab package (numpy, sympy, ...).
@@ -58,7 +63,8 @@ __all__ = ["RunResult", "run_notebook", "read_code_cells", "scan_for_tampering",
 # the three of this folder (answers.py, runner.py, sandbox.py), which the grader fingerprints.
 RUNNER = Path(__file__).resolve()
 SANDBOX = RUNNER.with_name("sandbox.py")
-MAX_NOTEBOOK_BYTES = 20_000_000
+MAX_NOTEBOOK_BYTES = 500_000_000      # a file this big is not read at all
+MAX_CODE_BYTES = 1_000_000            # the code of all cells (outputs do not count: they are dropped)
 EXTRACT_SECONDS = 20
 INTERRUPT_GRACE = 5
 MAX_ATTEMPTS = 3
@@ -91,13 +97,18 @@ class RunResult:
 
 # --- reading and scanning the notebook ------------------------------------------------------
 
-def read_code_cells(path) -> list:
-    """[(cell number, source)] of the code cells, numbered 1… over all cells as in Jupyter."""
-    path = Path(path)
-    size = path.stat().st_size
-    if size > MAX_NOTEBOOK_BYTES:
-        raise NotebookError(f"the file is {size / 1e6:.1f} MB, more than {MAX_NOTEBOOK_BYTES / 1e6:.0f} MB")
-    raw = path.read_bytes()
+def read_code_cells(path=None, raw: bytes | None = None) -> list:
+    """[(cell number, source)] of the code cells, numbered 1… over all cells as in Jupyter.
+
+    Outputs are ignored (they are not the submission); the code itself may be at most
+    :data:`MAX_CODE_BYTES`.
+    """
+    if raw is None:
+        path = Path(path)
+        size = path.stat().st_size
+        if size > MAX_NOTEBOOK_BYTES:
+            raise NotebookError(f"the file is {size / 1e6:.1f} MB, more than {MAX_NOTEBOOK_BYTES / 1e6:.0f} MB")
+        raw = path.read_bytes()
     try:
         nb = json.loads(raw.decode("utf-8"))
     except UnicodeDecodeError:
@@ -119,6 +130,10 @@ def read_code_cells(path) -> list:
         if not isinstance(source, str):
             raise NotebookError(f"cell {number} has no readable source")
         out.append((number, source))
+    code = sum(len(source.encode("utf-8", "replace")) for _, source in out)
+    if code > MAX_CODE_BYTES:
+        raise NotebookError(f"code too large: the code cells hold {code / 1e6:.1f} MB of code, more than "
+                            f"{MAX_CODE_BYTES / 1e6:g} MB (outputs do not count)")
     return out
 
 
@@ -196,25 +211,36 @@ class _Cell:
 class _Kernel:
     """A kernel started through the sandbox launcher, driven cell by cell."""
 
-    def __init__(self, workdir: Path, memory_mb: float, cpu_seconds: float, file_mb: float,
-                 output_mb: float, pid_file: Path | None, notebook: str = ""):
+    def __init__(self, workdir: Path, private: Path, memory_mb: float, cpu_seconds: float, file_mb: float,
+                 output_mb: float, pid_file: Path | None, token: str = "", user=None, hide=()):
         from jupyter_client import KernelManager
         from jupyter_client.kernelspec import KernelSpecManager
 
-        spec_dir = workdir / ".kernels" / "dhlab-sandbox"
+        spec_dir = private / ".kernels" / "dhlab-sandbox"
         spec_dir.mkdir(parents=True, exist_ok=True)
-        argv = [sys.executable, str(SANDBOX), "--memory-mb", str(memory_mb),
-                "--cpu-seconds", str(cpu_seconds), "--file-mb", str(file_mb), "--output-mb", str(output_mb),
-                "--", "-f", "{connection_file}"]
+        argv = [sys.executable, "-B", str(SANDBOX), "--memory-mb", str(memory_mb),
+                "--cpu-seconds", str(cpu_seconds), "--file-mb", str(file_mb), "--output-mb", str(output_mb)]
+        if user is not None:
+            argv += ["--uid", str(user[0]), "--gid", str(user[1]), "--workdir", str(workdir)]
+            argv += [a for folder in hide for a in ("--hide", str(folder))]
+        # outputs are counted, never kept: no pictures are rendered (text and HTML still count for floods)
+        argv += ["--", "-f", "{connection_file}", "--DisplayFormatter.active_types=text/plain",
+                 "--DisplayFormatter.active_types=text/html"]
         (spec_dir / "kernel.json").write_text(json.dumps(
             {"argv": argv, "display_name": "dhlab sandbox", "language": "python"}), encoding="utf-8")
         self.km = KernelManager(kernel_name="dhlab-sandbox",
                                 kernel_spec_manager=KernelSpecManager(kernel_dirs=[str(spec_dir.parent)]))
-        env = {k: v for k, v in os.environ.items() if not k.startswith(("JPY_", "JUPYTER_"))}
+        self.km.connection_file = str(private / f"connection-{secrets.token_hex(8)}.json")
+        env = {k: v for k, v in os.environ.items()
+               if not k.startswith(("JPY_", "JUPYTER_", "DHLAB_GRADE_")) and k not in ("OLDPWD", "PWD")}
+        # the kernel's environment names no file of the grader: HOME and TMPDIR are its own folder;
+        # it writes no compiled modules (dhlab's __pycache__ is part of the package's fingerprint)
+        env.pop("PYTHONPYCACHEPREFIX", None)
         env.update(OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1", MKL_NUM_THREADS="1",
-                   MPLBACKEND="agg", PYTHONHASHSEED="0",
+                   MPLBACKEND="agg", PYTHONHASHSEED="0", HOME=str(workdir), TMPDIR=str(workdir),
+                   PYTHONDONTWRITEBYTECODE="1",
                    IPYTHONDIR=str(workdir / ".ipython"), MPLCONFIGDIR=str(workdir / ".matplotlib"),
-                   DHLAB_GRADE_SUBMISSION=notebook)      # which submission a kernel runs (ps, cleanup)
+                   DHLAB_GRADE_TOKEN=token)      # which submission a kernel runs (ps, cleanup)
         self.km.start_kernel(cwd=str(workdir), env=env)
         if pid_file is not None:
             pid = getattr(getattr(self.km, "provisioner", None), "pid", None)
@@ -316,30 +342,6 @@ class _Kernel:
 
 
 _WRITER = r"""
-def encode(value):
-    # JSON by hand: the notebook may have replaced the json module
-    if value is None:
-        return "null"
-    if value is True or value is False:
-        return "true" if value else "false"
-    if type(value) is int:
-        return str(value)
-    if type(value) is float:
-        return repr(value)
-    if type(value) is str:
-        out = []
-        for ch in value:
-            code = ord(ch)
-            out.append(ch if 32 <= code < 127 and ch not in '"\\' else "\\u%04x" % code if code < 0x10000
-                       else "\\u%04x\\u%04x" % (0xD800 + ((code - 0x10000) >> 10), 0xDC00 + ((code - 0x10000) & 0x3FF)))
-        return '"' + "".join(out) + '"'
-    if type(value) is list:
-        return "[" + ",".join(encode(v) for v in value) + "]"
-    if type(value) is dict:
-        return "{" + ",".join(encode(str(k)) + ":" + encode(v) for k, v in value.items()) + "}"
-    return "null"
-
-
 def write(path, names, namespace):
     out = {}
     for name in names:
@@ -349,7 +351,7 @@ def write(path, names, namespace):
             except BaseException as e:
                 out[name] = {"__type__": "unreadable", "repr": (type(e).__name__ + ": " + str(e))[:200]}
     with open(path, "w", encoding="utf-8") as f:
-        f.write(encode(out))
+        f.write(encode_json(out))
 """
 
 
@@ -360,7 +362,7 @@ def _extract_code(path: Path) -> str:
     the real builtins, so a notebook that shadowed ``list`` or ``float`` (or changed
     dhlab) does not change how its answers are read.
     """
-    source = inspect.getsource(to_plain) + _WRITER
+    source = inspect.getsource(to_plain) + "\n\n" + inspect.getsource(encode_json) + _WRITER
     return ("__dhlab_g = {'__builtins__': __import__('builtins')}\n"
             f"__import__('builtins').exec({source!r}, __dhlab_g)\n"
             f"__dhlab_g['write']({str(path)!r}, {list(ANSWER_NAMES)!r}, globals())\n"
@@ -370,13 +372,16 @@ def _extract_code(path: Path) -> str:
 # --- one notebook ---------------------------------------------------------------------------
 
 def run_notebook(path, timeout: float = 30, total_timeout: float = 120, memory_mb: float = 2048,
-                 output_mb: float = 10, pid_file=None, progress_file=None, skip=()) -> RunResult:
+                 output_mb: float = 10, pid_file=None, progress_file=None, skip=(), workdir=None,
+                 user=None, hide=(), token: str = "") -> RunResult:
     """Run the notebook at ``path`` in a sandboxed kernel and read its answers (see the module doc).
 
     ``pid_file``: where to write the kernel's process id (so the grader can end it);
     ``progress_file``: where to write the number of the cell being run (so the grader
     knows which cell to leave out if this whole process is killed); ``skip``: cells
-    not to run.
+    not to run; ``workdir``: the kernel's own folder (default: a new temporary one);
+    ``user``: (uid, gid) the kernel runs as (the runner must be root); ``hide``:
+    folders the kernel must not see; ``token``: put in the kernel's environment.
     """
     started = time.monotonic()
     result = RunResult()
@@ -392,11 +397,15 @@ def run_notebook(path, timeout: float = 30, total_timeout: float = 120, memory_m
     skip = set(skip)
     result.skipped = sorted(skip)
     progress = Path(progress_file) if progress_file else None
-    workdir = Path(tempfile.mkdtemp(prefix="dhlab-grade-"))
+    own_workdir = workdir is None
+    workdir = Path(tempfile.mkdtemp(prefix="dhlab-grade-")) if own_workdir else Path(workdir)
+    private = Path(tempfile.mkdtemp(prefix="dhlab-runner-"))        # the grader's user only (0700)
+    token = token or secrets.token_hex(8)
     try:
         for attempt in range(MAX_ATTEMPTS):
-            kernel = _Kernel(workdir, memory_mb, cpu_seconds=total_timeout + 60, file_mb=64, output_mb=output_mb,
-                             pid_file=Path(pid_file) if pid_file else None, notebook=str(Path(path).resolve()))
+            kernel = _Kernel(workdir, private, memory_mb, cpu_seconds=total_timeout + 60, file_mb=64,
+                             output_mb=output_mb, pid_file=Path(pid_file) if pid_file else None, token=token,
+                             user=user, hide=hide)
             try:
                 broken = _run_cells(kernel, cells, skip, timeout, deadline, cap, result, attempt == 0, progress)
                 if broken is None:
@@ -416,7 +425,9 @@ def run_notebook(path, timeout: float = 30, total_timeout: float = 120, memory_m
         return result
     finally:
         result.seconds = round(time.monotonic() - started, 2)
-        shutil.rmtree(workdir, ignore_errors=True)
+        shutil.rmtree(private, ignore_errors=True)
+        if own_workdir:
+            shutil.rmtree(workdir, ignore_errors=True)
 
 
 def _run_cells(kernel, cells, skip, timeout, deadline, cap, result, record, progress) -> int | None:
@@ -461,15 +472,22 @@ def _extract(kernel, workdir: Path, result: RunResult) -> None:
                                 "stuck": "the kernel hung while the answers were read"}.get(
                                     cell.status, f"reading the answers failed ({cell.status})")
         return
+    # the kernel's own folder: never follow a link, never wait on a pipe, read a bounded amount
     try:
-        size = target.stat().st_size
+        fd = os.open(target, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
     except OSError:
         result.answers_error = "the kernel did not write the answers"
         return
-    if size > MAX_JSON_BYTES:
-        result.answers_error = f"the answers are {size} bytes, more than {MAX_JSON_BYTES}"
+    with os.fdopen(fd, "rb") as f:
+        import stat
+        if not stat.S_ISREG(os.fstat(f.fileno()).st_mode):
+            result.answers_error = "the answers are not a plain file"
+            return
+        data = f.read(MAX_JSON_BYTES + 1)
+    if len(data) > MAX_JSON_BYTES:
+        result.answers_error = f"the answers are more than {MAX_JSON_BYTES} bytes"
         return
-    result.answers_json = target.read_text(encoding="utf-8", errors="replace")
+    result.answers_json = data.decode("utf-8", errors="replace")
 
 
 def main(argv=None) -> int:
@@ -483,10 +501,16 @@ def main(argv=None) -> int:
     parser.add_argument("--pid-file", default=None, help="where to write the kernel's process id")
     parser.add_argument("--progress-file", default=None, help="where to write the number of the cell being run")
     parser.add_argument("--skip", type=int, action="append", default=[], help="a cell not to run (repeatable)")
+    parser.add_argument("--workdir", default=None, help="the kernel's own folder (owned by --uid)")
+    parser.add_argument("--uid", type=int, default=None, help="the unprivileged user the kernel runs as")
+    parser.add_argument("--gid", type=int, default=None)
+    parser.add_argument("--hide", action="append", default=[], help="a folder the kernel must not see")
+    parser.add_argument("--token", default="", help="an opaque mark put in the kernel's environment")
     args = parser.parse_args(argv)
     apply_limits(memory_mb=max(4096, 2 * args.memory_mb), cpu_seconds=None, file_mb=None)
+    user = (args.uid, args.gid) if args.uid is not None else None
     result = run_notebook(args.notebook, args.timeout, args.total_timeout, args.memory_mb, args.output_mb,
-                          args.pid_file, args.progress_file, args.skip)
+                          args.pid_file, args.progress_file, args.skip, args.workdir, user, args.hide, args.token)
     out = Path(args.result)
     tmp = out.with_name(out.name + ".tmp")
     tmp.write_text(json.dumps(asdict(result)), encoding="utf-8")

@@ -17,7 +17,9 @@ It works with both Jupyter backends:
   executing notebooks whose sliders print into one can hang, see
   nbclient#312.)
 
-The figure is *not* registered with ``pyplot``: re-running a cell does not pile
+The figure is a course figure (:func:`~dhlab.views.figures.new_figure`: at
+least 100 dpi and 450 px wide, readable text, the projector scale applied) and
+is *not* registered with ``pyplot``: re-running a cell does not pile
 up figures, and ``plt.show()`` never shows it a second time.
 
 >>> live = LiveFigure(figsize=(3, 3))
@@ -38,9 +40,9 @@ import zlib
 import matplotlib
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.figure import Figure
 
 from ..validation import DHLabError
+from .figures import new_figure
 
 __all__ = ["LiveFigure", "ipympl_active", "forget_previous_run", "encode_png"]
 
@@ -63,9 +65,10 @@ class LiveFigure:
     """
 
     def __init__(self, figsize=(6, 6), dpi=100, backend: str = "auto"):
-        if backend not in ("auto", "ipympl", "image"):
+        if not isinstance(backend, str) or backend not in ("auto", "ipympl", "image"):
             raise DHLabError(f"backend must be 'auto', 'ipympl' or 'image', got {backend!r}.")
-        self.figure = Figure(figsize=figsize, dpi=dpi)
+        # at least 100 dpi and 450 px wide, text at least 12 px, the projector scale applied
+        self.figure = new_figure(figsize, dpi=dpi, layout="none")
         self.uses_ipympl = backend == "ipympl" or (backend == "auto" and ipympl_active())
         if self.uses_ipympl:
             _attach_ipympl_canvas(self.figure)

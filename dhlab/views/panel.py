@@ -24,8 +24,10 @@ import numpy as np
 
 from ..validation import DHLabError
 from .livefigure import LiveFigure, forget_previous_run
+from .view import one_pose
 
-__all__ = ["Panel", "joint_sliders", "slider_to_q", "q_to_slider", "unit_of", "checked_start"]
+__all__ = ["Panel", "joint_sliders", "slider_to_q", "q_to_slider", "unit_of", "checked_start",
+           "view_controls"]
 
 REVOLUTE_STEP_DEG = 0.5
 PRISMATIC_STEPS = 1000         # a prismatic slider's range is cut into this many steps
@@ -52,10 +54,7 @@ def slider_to_q(robot, sliders) -> np.ndarray:
 def checked_start(robot, q) -> np.ndarray:
     """``q`` as a float array, refused with a clear message if it has the wrong
     length or lies outside the joint limits (a slider could not show it)."""
-    q = np.asarray(q, dtype=float)
-    if q.shape != (robot.n,):
-        raise DHLabError(f"q must hold {robot.n} joint values (radians for revolute joints, "
-                         f"length for prismatic ones), got shape {q.shape}.")
+    q = one_pose(robot, q)              # one pose: no batch, text, NaN, degrees as radians
     for j, (link, value) in enumerate(zip(robot.links, q)):
         lo, hi = link.qlim
         if not lo - 1e-12 <= value <= hi + 1e-12:
@@ -84,6 +83,47 @@ def joint_sliders(robot, q, labels=None):
         sliders.append(slider)
         rows.append(widgets.HBox([slider, widgets.Label(unit_of(robot, link))]))
     return rows, sliders
+
+
+def view_controls(view, run=None) -> list:
+    """The controls of a robot view, as widgets: camera presets (3D: iso, front,
+    side, top) and zoom, labels on/off, joint axes on/off (3D). Each change
+    redraws the view; ``run(action, value)`` (e.g. a panel's :meth:`Panel.run`,
+    which shows errors) calls the view's method."""
+    def changed(action):
+        def observer(change):
+            (run or (lambda f, *args: f(*args)))(action, change["new"])
+        return observer
+
+    rows = []
+    if view.projection == "3d":
+        camera = widgets.ToggleButtons(options=["iso", "front", "side", "top"], value=view.camera,
+                                       description="view", tooltips=[
+                                           "oblique: every triad reads", "looking along +y",
+                                           "looking along -x", "looking down -z"],
+                                       style={"description_width": "3em", "button_width": "4.2em"})
+        camera.observe(changed(view.set_camera), names="value")
+        rows.append(camera)
+    zoom = widgets.FloatSlider(value=view.zoom, min=0.5, max=3.0, step=0.05, description="zoom",
+                               readout_format=".2f", continuous_update=False,
+                               style={"description_width": "3em"}, layout=widgets.Layout(width="330px"))
+    zoom.observe(changed(view.set_zoom), names="value")
+    rows.append(zoom)
+    toggles = []
+    if view.labels is not None:
+        labels = widgets.Checkbox(value=view.labels.get_visible(), description="frame labels",
+                                  indent=False, layout=widgets.Layout(width="auto"))
+        labels.observe(changed(view.show_labels), names="value")
+        toggles.append(labels)
+    if getattr(view, "joint_axes_line", None) is not None:
+        axes = widgets.Checkbox(value=view.joint_axes_line.get_visible(), indent=False,
+                                description="joint axes (z of each joint)",
+                                layout=widgets.Layout(width="auto"))
+        axes.observe(changed(view.show_joint_axes), names="value")
+        toggles.append(axes)
+    if toggles:
+        rows.append(widgets.HBox(toggles))
+    return rows
 
 
 class Panel(widgets.HBox):

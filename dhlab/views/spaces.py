@@ -11,12 +11,23 @@ P-R mechanism: two points on the left, two ghost robots on the right), and
 gets target sliders (x, y): moving the target runs the inverse kinematics. An
 unreachable target (|y| > l2 for the P-R mechanism) is reported, not a crash.
 
+**The panel moves only what the student moves.** A joint slider never moves
+another joint slider; moving the target keeps the robot on its branch
+(*rama*) of the inverse kinematics, and never jumps to the other branch unless
+the student picks it with the ``branch`` buttons. Where the robot's own branch
+cannot reach the target within the joint limits, the robot stays and the
+panel says which branch would.
+
 >>> import functools, dhlab
 >>> robot = dhlab.robots.pr_mechanism()
 >>> panel = spaces(robot, ik=functools.partial(dhlab.ik.pr_mechanism_ik, robot))
 >>> panel.set_target(2.0, 0.25)        # both branches: A (q2 = 30°) and B (q2 = 150°)
 >>> [s.round(6).tolist() for s in panel.solutions]
 [[0.566987, 0.523599], [1.433013, 2.617994]]
+>>> panel.branch, panel.q.round(6).tolist()      # the robot went to A, its branch
+('A', [0.566987, 0.523599])
+>>> panel.set_branch("B"); panel.q.round(6).tolist()
+[1.433013, 2.617994]
 """
 from __future__ import annotations
 
@@ -27,10 +38,10 @@ import numpy as np
 from matplotlib.patches import Rectangle
 from matplotlib.transforms import offset_copy
 
-from ..validation import DHLabError
+from ..validation import DHLabError, as_choice
 from .livefigure import LiveFigure
 from .panel import Panel, checked_start, joint_sliders, q_to_slider, slider_to_q, unit_of
-from .view import default_q, robot_view
+from .view import checked_robot, default_q, robot_view
 
 __all__ = ["spaces", "SpacesPanel", "wrap_into_limits"]
 
@@ -65,7 +76,13 @@ class SpacesPanel(Panel):
     ``message`` (HTML) and ``q``.
     """
 
-    def __init__(self, robot, ik=None, q=None, *, figsize=(10, 4.5), backend="auto"):
+    def __init__(self, robot, q=None, *, ik=None, figsize=(10, 4.5), backend="auto"):
+        checked_robot(robot)
+        if callable(q) and ik is None:
+            raise DHLabError("spaces(robot, q=None, *, ik=None): the second argument is the start "
+                             "pose q; pass the inverse kinematics by name, spaces(robot, ik=...).")
+        if ik is not None and not callable(ik):
+            raise DHLabError(f"ik must be a function ik(x, y) -> list of joint vectors, got {ik!r:.60}.")
         if robot.n != 2:
             raise DHLabError(f"the joint-space view needs a 2-DOF mechanism (one axis per joint); "
                              f"{robot.name!r} has {robot.n} joints.")
@@ -78,16 +95,25 @@ class SpacesPanel(Panel):
         rows, self.sliders = joint_sliders(robot, q)
         self.message = widgets.HTML(layout=widgets.Layout(max_width="480px"))
         controls = [widgets.HTML("<b>Joints</b> (<i>articulaciones</i>)"), *rows]
-        self.target_sliders = []
+        self.target_sliders, self._sent = [], None
+        self.branch_buttons = None
         if ik is not None:
             self.target_sliders = self._target_sliders()
+            self.branch_buttons = widgets.ToggleButtons(
+                options=list(SOLUTION_NAMES[:2]), description="branch",
+                tooltips=["solution A of the inverse kinematics", "solution B"],
+                style={"description_width": "3em", "button_width": "3em"})
             controls += [widgets.HTML("<b>Target</b> for the end effector: inverse kinematics"),
-                         *self.target_sliders]
+                         *self.target_sliders, self.branch_buttons]
         super().__init__(live, controls + [self.message])
         self._quiet = False
+        self.branch = None
         self.run(self._from_joints)
         self.observe_values(self.sliders, self._from_joints)
         self.observe_values(self.target_sliders, self._from_target)
+        if self.branch_buttons is not None:
+            self.branch_buttons.observe(lambda change: self._quiet or self.run(self.set_branch, change["new"]),
+                                        names="value")
 
     # --- figure ------------------------------------------------------------------------
     def _build_joint_axes(self, live):
@@ -118,7 +144,7 @@ class SpacesPanel(Panel):
         # the ghosts (one per possible IK solution) first, so the robot is drawn on top
         self.ghosts = [robot_view(self.robot, q, ax=ax, live=live, planar=planar, triads=False,
                                   labels=False, color=c, alpha=0.45) for c in GHOST_COLORS]
-        self.view = robot_view(self.robot, q, ax=ax, live=live, planar=planar)
+        self.view = robot_view(self.robot, q, ax=ax, live=live, planar=planar, framing="fixed")
         self.view.setup_axes(ax)
         ax.set_title("Cartesian space (espacio cartesiano)")
         if planar:                     # the workspace, as the end effector positions it can reach
@@ -126,7 +152,7 @@ class SpacesPanel(Panel):
         self.target_mark, = ax.plot([], [], "x", ms=12, mew=3, color="k") if planar else \
             ax.plot([], [], [], "x", ms=12, mew=3, color="k")
         live.add_moving(self.target_mark)
-        live.figure.set_layout_engine("tight")
+        live.figure.set_layout_engine("constrained")
 
     def _workspace_points(self, per_joint: int = 60):
         (lo1, hi1), (lo2, hi2) = (link.qlim for link in self.robot.links)
@@ -149,36 +175,77 @@ class SpacesPanel(Panel):
         return slider_to_q(self.robot, self.sliders)
 
     def _from_joints(self):
-        """A joint slider moved: move the robot, and run the IK on where it went."""
+        """A joint slider moved: move the robot, and run the IK on where it went.
+        No other joint slider moves; the target sliders follow the end effector."""
         if self._quiet:
             return
         q = self.q
         x, y = np.asarray(self.robot.fk(q), dtype=float)[:2, 3]
         if self.ik is not None:
-            self._set_quietly(self.target_sliders, (x, y))
+            self._set_target_sliders((x, y))
             self._show_solutions(self.ik(x, y), (x, y))
+            if self.solutions:                 # the robot's branch: the solution it is at
+                near = int(np.argmin([np.linalg.norm(s - q) for s in self.solutions]))
+                self._set_branch_quietly(SOLUTION_NAMES[near])
         self._draw(q, (x, y) if self.ik is not None else None)
         self._say(self._ik_text((x, y)) if self.ik is not None else "")
 
     def _from_target(self):
-        """A target slider moved: solve the IK and move the robot to the solution
-        nearest to where it is (so it stays on its branch)."""
+        """A target slider moved (by the student: the panel's own updates of the
+        target sliders, and the browser's echo of them, are ignored)."""
         if self._quiet:
             return
-        self.set_target(*(s.value for s in self.target_sliders))
+        values = tuple(float(s.value) for s in self.target_sliders)
+        if self._sent is not None and all(
+                abs(v - sent) <= slider.step / 2 + 1e-12
+                for v, sent, slider in zip(values, self._sent, self.target_sliders)):
+            return                                # our own value, rounded by the slider
+        self.set_target(*values)
 
     def set_target(self, x: float, y: float) -> None:
-        """Solve the inverse kinematics for (x, y) and show every solution."""
+        """Solve the inverse kinematics for (x, y), show every solution, and move
+        the robot to the solution of its own branch (never to another branch:
+        see :meth:`set_branch`)."""
         if self.ik is None:
             raise DHLabError("this panel has no inverse kinematics: pass ik=... to spaces().")
-        self._set_quietly(self.target_sliders, (x, y))
-        usable = self._show_solutions(self.ik(x, y), (x, y))
-        q = self.q
-        if usable:
-            q = min(usable, key=lambda s: np.linalg.norm(s - q))
+        x, y = (float(v) for v in (x, y))
+        self._set_target_sliders((x, y))
+        self._show_solutions(self.ik(x, y), (x, y))
+        q, note = self.q, ""
+        k = SOLUTION_NAMES.index(self.branch) if self.branch in SOLUTION_NAMES else 0
+        if k < len(self.solutions) and self.solutions_ok[k]:
+            q = self.solutions[k]
             self._set_quietly(self.sliders, [q_to_slider(link, v) for link, v in zip(self.robot.links, q)])
+        elif self.solutions:
+            others = [SOLUTION_NAMES[j] for j, ok in enumerate(self.solutions_ok) if ok]
+            note = (f"<br><i>Branch {self.branch} cannot reach this target within the joint limits: "
+                    "the robot stays where it is" + (f"; branch {' or '.join(others)} can (choose it "
+                                                     "with the branch buttons)." if others else ".")
+                    + "</i>")
         self._draw(q, (x, y))
-        self._say(self._ik_text((x, y)))
+        self._say(self._ik_text((x, y)) + note)
+
+    def set_branch(self, name: str) -> None:
+        """Move the robot to solution ``name`` ('A', 'B', …) of the current target:
+        the only way the panel changes branch."""
+        name = as_choice(name, SOLUTION_NAMES[:max(len(self.solutions), 1)], "branch")
+        self._set_branch_quietly(name)
+        if self.ik is None or getattr(self, "target", None) is None:
+            return
+        self.set_target(*self.target)
+
+    def _set_branch_quietly(self, name):
+        self.branch = name
+        if self.branch_buttons is not None and name in self.branch_buttons.options:
+            self._quiet = True
+            try:
+                self.branch_buttons.value = name
+            finally:
+                self._quiet = False
+
+    def _set_target_sliders(self, target):
+        self._set_quietly(self.target_sliders, target)
+        self._sent = tuple(float(s.value) for s in self.target_sliders)   # what the sliders show
 
     def _show_solutions(self, solutions, target):
         """Remember the IK solutions; return those within the joint limits."""
@@ -241,11 +308,15 @@ class SpacesPanel(Panel):
         return f"<dhlab joint/Cartesian spaces: {self.robot.name}>"
 
 
-def spaces(robot, ik=None, q=None, *, figsize=(10, 4.5), backend: str = "auto") -> SpacesPanel:
+def spaces(robot, q=None, *, ik=None, figsize=(10, 4.5), backend: str = "auto") -> SpacesPanel:
     """Joint space and Cartesian space side by side for a 2-DOF ``robot``.
 
-    ``ik(x, y)`` (optional) returns the list of joint vectors that put the end
-    effector at (x, y), e.g. ``functools.partial(dhlab.ik.pr_mechanism_ik, robot)``;
-    all of them are shown. ``q``: the starting pose (radians / length units).
+    ``q``: the starting pose (radians / length units). ``ik(x, y)`` (optional,
+    keyword) returns the list of joint vectors that put the end effector at
+    (x, y), e.g. ``functools.partial(dhlab.ik.pr_mechanism_ik, robot)``; all of
+    them are shown, and target sliders and branch buttons appear.
+
+    >>> import dhlab
+    >>> panel = spaces(dhlab.robots.pr_mechanism(), [0.5, dhlab.deg(30)])
     """
-    return SpacesPanel(robot, ik, q, figsize=figsize, backend=backend)
+    return SpacesPanel(robot, q, ik=ik, figsize=figsize, backend=backend)

@@ -23,12 +23,14 @@ import math
 import ipywidgets as widgets
 import numpy as np
 
-from ..validation import DHLabError
+from ..transforms import Rx, Rz, trans
+from ..validation import DHLabError, as_index, as_matrix4, as_number
+from .camera import set_camera
 from .livefigure import LiveFigure
 from .panel import Panel
 from .teach import matrix_html
-from ..transforms import Rx, Rz, trans
-from .view import AXIS_COLORS, FrameLabels3D, triad_segments
+from .view import (AXIS_COLORS, FrameLabels3D, checked_robot, keep_texts_inside, line_in_box, one_pose,
+                   space_ticks, triad_segments)
 
 __all__ = ["dh_partial", "dh_params", "motion_text", "stepthrough", "stepthrough_link",
            "StepThroughPanel", "MOTIONS"]
@@ -48,23 +50,18 @@ def dh_partial(theta: float, d: float, a: float, alpha: float, step: float) -> n
 
     Angles in radians. A fractional step applies that part of the next motion.
     """
-    if not 0 <= step <= 4:
-        raise DHLabError(f"step must be between 0 (frame i-1) and 4 (frame i), got {step}.")
+    step = _checked_step(step)
     T = np.eye(4)
     for k, (make, amount) in enumerate(zip(_MAKERS, (theta, d, a, alpha))):
         T = T @ make(min(max(step - k, 0.0), 1.0) * amount)
     return T
 
 
-def line_in_box(point, direction, lo, hi) -> np.ndarray:
-    """The two ends of the piece of the line ``point + t·direction`` inside the box
-    [lo, hi] (matplotlib's 3D axes do not clip lines at their limits)."""
-    t_lo, t_hi = -np.inf, np.inf
-    for p, v, a, b in zip(point, direction, lo, hi):
-        if abs(v) > 1e-12:
-            t1, t2 = sorted(((a - p) / v, (b - p) / v))
-            t_lo, t_hi = max(t_lo, t1), min(t_hi, t2)
-    return np.array([point + t_lo * direction, point + t_hi * direction])
+def _checked_step(step) -> float:
+    step = as_number(step, "step")
+    if not 0 <= step <= 4:
+        raise DHLabError(f"step must be between 0 (frame i-1) and 4 (frame i), got {step:g}.")
+    return step
 
 
 def dh_params(A, tol: float = 1e-9):
@@ -121,9 +118,10 @@ class StepThroughPanel(Panel):
 
     def __init__(self, theta, d, a, alpha, *, i=1, base=None, unit="", step=0.0,
                  figsize=(6, 6), backend="auto"):
-        self.params = (float(theta), float(d), float(a), float(alpha))
-        self.i, self.unit = i, unit
-        self.base = np.eye(4) if base is None else np.asarray(base, dtype=float)
+        self.params = tuple(as_number(v, name) for v, name in zip((theta, d, a, alpha), "θdaα"))
+        self.i, self.unit = as_index(i, "i", 1, 10_000), str(unit)
+        self.base = np.eye(4) if base is None else as_matrix4(base, "base")
+        step = _checked_step(step)
         # triad length: a third of the link's longest offset (1 when it has none)
         self.length = 0.3 * max(abs(d), abs(a)) if max(abs(d), abs(a)) > 1e-9 else 1.0
         live = LiveFigure(figsize=figsize, backend=backend)
@@ -140,22 +138,27 @@ class StepThroughPanel(Panel):
 
     # --- figure ----------------------------------------------------------------------
     def _build_figure(self, live):
-        ax = live.figure.add_subplot(projection="3d")
+        ax = live.figure.add_axes([0.1, 0.08, 0.78, 0.8], projection="3d")
         start, end = self.base, self.base @ dh_partial(*self.params, 4)
         points = np.array([start[:3, 3], end[:3, 3]])
         center = points.mean(axis=0)
-        half = max(np.abs(points - center).max() + 1.6 * self.length, 1.6 * self.length)
+        half = max(np.abs(points - center).max() + 1.2 * self.length, 1.4 * self.length)
         ax.set(xlim=(center[0] - half, center[0] + half), ylim=(center[1] - half, center[1] + half),
                zlim=(center[2] - half, center[2] + half), xlabel="x", ylabel="y", zlabel="z")
-        ax.set_box_aspect((1, 1, 1))
-        ax.set_title(rf"Link {self.i}: the thick frame goes from $\{{S_{{{self.i - 1}}}\}}$ "
-                     rf"to $\{{S_{{{self.i}}}\}}$")
+        ax.set_box_aspect((1, 1, 1), zoom=1.0)
+        ax.set_proj_type("ortho")
+        set_camera(ax, "iso", frames=np.array([start, end]))   # both triads read
+        # the title belongs to this axes; two lines fit the narrowest figure
+        ax.set_title(rf"Link {self.i}: the thick frame goes" "\n"
+                     rf"from $\{{S_{{{self.i - 1}}}\}}$ to $\{{S_{{{self.i}}}\}}$", pad=2)
         # still: frame i-1 (solid), frame i (faint, where the motions end), the z_(i-1) axis
         self._triad(ax, start, lw=2, alpha=1.0)
         self._triad(ax, end, lw=1.5, alpha=0.3, ls="--")
         FrameLabels3D(ax, [rf"$\{{S_{{{self.i - 1}}}\}}$", rf"$\{{S_{{{self.i}}}\}}$"]).set_points(
             [start[:3, 3], end[:3, 3]])
         lo, hi = center - half, center + half
+        space_ticks(ax)                       # no colliding tick labels
+        keep_texts_inside(ax)                 # nothing clipped at the figure's edge
         ax.plot(*line_in_box(start[:3, 3], start[:3, 2], lo, hi).T, ":", color=AXIS_COLORS[2], lw=1)
         # moving: the frame being carried, and the path its origin has travelled
         self.moving_axes = self._triad(ax, start, lw=3.5, alpha=1.0)
@@ -179,6 +182,17 @@ class StepThroughPanel(Panel):
         self.live.refresh()
         self.text.value = motion_text(step, *self.params, unit=self.unit)
         self.matrix.value = matrix_html(dh_partial(*self.params, step), self._product(step))
+
+    def frame_at(self, step: float) -> np.ndarray:
+        """The frame after ``step`` (0…4) of the four motions, in the figure's
+        coordinates, *without* moving the slider (the panel stays where the
+        student left it: at 0 after Run All).
+
+        >>> panel = stepthrough(theta_deg=90, d=1.0, a=0.5, alpha_deg=-90, i=2)
+        >>> panel.frame_at(2)[:3, 3].round(6).tolist(), panel.slider.value
+        ([0.0, 0.0, 1.0], 0.0)
+        """
+        return self.base @ dh_partial(*self.params, _checked_step(step))
 
     def _product(self, step):
         names = []
@@ -214,17 +228,21 @@ def stepthrough(theta_deg: float = 0.0, d: float = 0.0, a: float = 0.0, alpha_de
     >>> panel.frame[:3, 3].round(6).tolist()
     [0.0, 0.0, 1.0]
     """
-    return StepThroughPanel(math.radians(theta_deg), d, a, math.radians(alpha_deg),
-                            **_options(i, unit, step, figsize, backend))
+    theta, alpha = (math.radians(as_number(v, name)) for v, name in ((theta_deg, "theta_deg"),
+                                                                      (alpha_deg, "alpha_deg")))
+    return StepThroughPanel(theta, d, a, alpha, **_options(i, unit, step, figsize, backend))
 
 
 def stepthrough_link(robot, i: int, q=None, *, step: float = 0.0, figsize=(6, 6),
                      backend: str = "auto") -> StepThroughPanel:
     """Step through link ``i`` (1…n) of a DH ``robot`` at pose ``q`` (radians / length
-    units; default zero), placed where the robot puts frame i-1."""
-    if not 1 <= i <= robot.n:
-        raise DHLabError(f"i must be a link number 1…{robot.n}, got {i}.")
-    q = np.zeros(robot.n) if q is None else np.asarray(q, dtype=float)
+    units; default zero, inside the joint limits), placed where the robot puts frame i-1.
+    ``step`` (0…4, keyword) is where the slider starts; the panel always starts at 0
+    unless told otherwise. Use :meth:`StepThroughPanel.frame_at` to read a step
+    without moving the slider."""
+    checked_robot(robot)
+    i = as_index(i, "link number i", 1, robot.n)
+    q = one_pose(robot, q)
     frames = np.asarray(robot.frames(q), dtype=float)
     A = np.linalg.solve(frames[i - 1], frames[i])       # ^{i-1}A_i = inv(F_{i-1}) · F_i
     theta, d, a, alpha = dh_params(A)

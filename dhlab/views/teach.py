@@ -17,9 +17,10 @@ from __future__ import annotations
 import numpy as np
 import ipywidgets as widgets
 
-from .panel import Panel, checked_start, joint_sliders, q_to_slider, slider_to_q
 from ..transforms import rpy
-from .view import default_q, robot_view
+from ..validation import DHLabError
+from .panel import Panel, checked_start, joint_sliders, q_to_slider, slider_to_q, view_controls
+from .view import checked_robot, default_q, robot_view
 
 __all__ = ["teach", "TeachPanel", "pose_text", "matrix_html"]
 
@@ -59,17 +60,22 @@ class TeachPanel(Panel):
     """
 
     def __init__(self, robot, q=None, *, on_change=None, planar=None, figsize=None,
-                 backend: str = "auto"):
-        self.robot = robot
+                 backend: str = "auto", controls: bool = True, **view_options):
+        self.robot = checked_robot(robot)
+        if on_change is not None and not callable(on_change):
+            raise DHLabError(f"on_change must be a function of q (or None), got {on_change!r:.60}.")
         self.on_change = on_change
         q = default_q(robot) if q is None else checked_start(robot, q)
         rows, self.sliders = joint_sliders(robot, q)
-        self.view = robot_view(robot, q, planar=planar, figsize=figsize, backend=backend)
+        self.view = robot_view(robot, q, planar=planar, figsize=figsize, backend=backend,
+                               **view_options)
         live = self.view.live
         self.readout = widgets.HTML()
         self.matrix = widgets.HTML()
+        extra = view_controls(self.view, run=lambda action, value: self.run(action, value)) \
+            if controls else []
         super().__init__(live, [widgets.HTML(f"<b>{robot.name}</b>: joints (<i>articulaciones</i>)"),
-                                *rows, self.readout, self.matrix])
+                                *rows, self.readout, self.matrix, *extra])
         self._refresh()
         self.observe_values(self.sliders, self._refresh)
 
@@ -79,8 +85,9 @@ class TeachPanel(Panel):
         return slider_to_q(self.robot, self.sliders)
 
     def set_q(self, q) -> None:
-        """Move every slider (q in radians / length units) and redraw once."""
-        q = np.asarray(q, dtype=float)
+        """Move every slider (q in radians / length units, one value per joint,
+        within the limits) and redraw once."""
+        q = checked_start(self.robot, q)
         self._quiet = True
         try:
             for link, slider, value in zip(self.robot.links, self.sliders, q):
@@ -108,7 +115,7 @@ class TeachPanel(Panel):
 
 
 def teach(robot, q=None, *, on_change=None, planar=None, figsize=None,
-          backend: str = "auto") -> TeachPanel:
+          backend: str = "auto", controls: bool = True, **view_options) -> TeachPanel:
     """A teach panel for ``robot``: sliders (revolute in degrees, prismatic in
     length units, within the joint limits), the robot view, and the live
     end-effector pose and 4x4 matrix.
@@ -118,8 +125,12 @@ def teach(robot, q=None, *, on_change=None, planar=None, figsize=None,
     figure is drawn, e.g. to check an exercise (its errors are shown in the
     panel) or to move artists of your own (add them with
     ``panel.view.live.add_moving``; no extra draw is needed). ``planar``: force the 2D
-    (True) or 3D (False) view. ``figsize``: inches (default
-    from the workspace's shape). ``backend``: 'auto', 'ipympl' or 'image'.
+    (True) or 3D (False) view. ``figsize``: inches (default from the
+    workspace's shape; at least 4.5 in at 100 dpi, see
+    :func:`dhlab.views.figures.new_figure`). ``backend``: 'auto', 'ipympl' or
+    'image'. ``controls``: show the camera presets, zoom and label toggles.
+    Other keyword options go to the view (:func:`~dhlab.views.view.robot_view`):
+    ``labels``, ``joint_axes``, ``camera``, ``zoom``, ``title``, ``framing``.
     """
     return TeachPanel(robot, q, on_change=on_change, planar=planar, figsize=figsize,
-                      backend=backend)
+                      backend=backend, controls=controls, **view_options)

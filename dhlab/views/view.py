@@ -5,15 +5,17 @@ A view draws, for a joint vector ``q``:
 * the links (*eslabones*) as lines from frame origin to frame origin, with a
   dot at each origin;
 * a right-handed (*dextrógiro*) triad at every frame: **x red, y green, z blue**
-  (seed 000, figure 10), labelled ``{S_0} … {S_n}``;
+  (seed 000, figure 10), labelled ``{S_0} … {S_n}``; frames at one place share
+  one label (``{S_4,S_5,S_6}``) and labels never overlap (:mod:`~dhlab.views.labels`);
 * the end effector (*efector final*) as an orange star (and its own triad,
-  labelled ``{E}``, when the robot has a tool transform).
+  labelled ``{E}``, when the robot has a tool transform);
+* optionally (``joint_axes=True``) the joint axes as long dashed lines through
+  each origin along z_(i-1), as the seeds draw them: parallel axes show at once.
 
-``view.update(q)`` only moves these artists: it never clears the axes or makes
-a new figure, and the axis limits are fixed from the robot's workspace (see
-:func:`workspace_box`), so the picture does not jump while the robot moves.
-Only the moving artists are redrawn, over a cached picture of the axes
-(:mod:`dhlab.livefigure`): a few milliseconds per update.
+The robot fills its view (:mod:`~dhlab.views.framing`): the limits follow the
+robot's configuration, with hysteresis so that the axes do not jump on every
+step. ``view.update(q)`` only moves the artists; the cached picture of the
+axes (:mod:`~dhlab.views.livefigure`) is redrawn only when the frame changes.
 
 >>> import dhlab
 >>> robot = dhlab.robots.ssrms()
@@ -21,24 +23,54 @@ Only the moving artists are redrawn, over a cached picture of the axes
 >>> view.update(dhlab.deg([0, 30, 0, 0, 0, 0, 0]))
 >>> view.frames.shape                        # the frames drawn last (n+1, 4, 4)
 (8, 4, 4)
+>>> view.set_camera("top"); view.set_zoom(1.5); view.show_labels(False)
 """
 from __future__ import annotations
 
 import numpy as np
-from matplotlib.collections import PathCollection
-from matplotlib.textpath import TextPath
-from matplotlib.transforms import Affine2D
-from mpl_toolkits.mplot3d import proj3d
+from matplotlib.ticker import MaxNLocator
 
+from ..validation import DHLabError, as_choice, as_flag, as_number, check_joint_values
+from . import framing
+from .camera import set_camera
+from .labels import FrameLabels, FrameLabels3D
 from .livefigure import LiveFigure
 
-__all__ = ["RobotView", "RobotView3D", "RobotView2D", "robot_view", "triad_segments",
-           "FrameLabels", "FrameLabels3D", "AXIS_COLORS", "default_q", "workspace_box"]
+__all__ = ["RobotView", "RobotView3D", "RobotView2D", "robot_view", "triad_segments", "keep_texts_inside",
+           "FrameLabels", "FrameLabels3D", "AXIS_COLORS", "default_q", "workspace_box",
+           "checked_robot", "one_pose", "line_in_box"]
 
 AXIS_COLORS = ("tab:red", "tab:green", "tab:blue")    # x, y, z
 LINK_COLOR = "0.25"
 EE_COLOR = "darkorange"
-TRIAD_FRACTION = 0.06       # triad length as a fraction of the workspace's longest side
+JOINT_AXIS_COLOR = "0.55"
+TRIAD_FRACTION = 0.08       # triad length as a fraction of the robot's typical size
+MAX_LIMIT = 1e6             # a joint limit beyond this cannot be drawn (1e308 is "no limit")
+
+
+def checked_robot(robot):
+    """``robot`` if it is a dhlab robot with finite joint limits a view can sample,
+    else a DHLabError saying what is wrong."""
+    if not all(hasattr(robot, name) for name in ("links", "frames", "n", "tool")):
+        raise DHLabError(f"expected a dhlab robot (dhlab.DHRobot or dhlab.Robot), got "
+                         f"{type(robot).__name__} {robot!r:.60}.")
+    if robot.n < 1:
+        raise DHLabError("the robot has no joints: nothing to move.")
+    for j, link in enumerate(robot.links):
+        lo, hi = (float(v) for v in link.qlim)
+        if not (np.isfinite(lo) and np.isfinite(hi)) or max(abs(lo), abs(hi)) > MAX_LIMIT:
+            raise DHLabError(f"joint {j + 1}'s limits ({lo:g}, {hi:g}) are too wide to draw a slider "
+                             "or a workspace; give the robot finite limits, e.g. qlim=(0, 1) for a "
+                             "prismatic joint.")
+    return robot
+
+
+def one_pose(robot, q, name: str = "q") -> np.ndarray:
+    """One joint vector for ``robot`` as floats (radians / length units): ``None``
+    gives :func:`default_q`; a batch, text, NaN… are refused with a DHLabError."""
+    if q is None:
+        return default_q(robot)
+    return check_joint_values(q, robot.links, name=name, single=True)
 
 
 def default_q(robot) -> np.ndarray:
@@ -48,12 +80,13 @@ def default_q(robot) -> np.ndarray:
 
 
 def workspace_box(robot, samples: int = 500) -> tuple:
-    """Fixed axis limits (lo, hi), each of shape (3,), that the robot does not leave.
+    """Axis limits (lo, hi), each of shape (3,), that the robot does not leave.
 
     The box holds every frame origin seen at ``samples`` random poses within
     the joint limits, plus a margin; no side is shorter than a quarter of the
     longest (a planar robot still gets some depth) and it never extends past
-    the guaranteed bound ``robot.reach()`` around the base.
+    the guaranteed bound ``robot.reach()`` around the base. A robot whose
+    origins all coincide gets a unit box.
     """
     rng = np.random.default_rng(0)                     # the same limits every time
     qlo, qhi = np.array([link.qlim for link in robot.links], dtype=float).T
@@ -63,13 +96,26 @@ def workspace_box(robot, samples: int = 500) -> tuple:
         frames = np.concatenate([frames, np.asarray(robot.fk(poses), dtype=float)[:, None]], axis=1)
     points = frames[..., :3, 3].reshape(-1, 3)
     lo, hi = points.min(axis=0), points.max(axis=0)
-    longest = max(float((hi - lo).max()), 1e-9)
+    longest = float((hi - lo).max())
+    if not longest > 1e-9:                              # every origin at one place
+        return lo - 1.0, hi + 1.0
     center = (lo + hi) / 2
     half = np.maximum((hi - lo) / 2 + 0.1 * longest, 0.125 * longest)
-    base, reach = frames[0, 0, :3, 3], float(robot.reach())
+    base, reach = frames[0, 0, :3, 3], max(float(robot.reach()), longest)
     lo = np.maximum(center - half, base - reach)
     hi = np.minimum(center + half, base + reach)
     return lo, hi
+
+
+def typical_size(robot, samples: int = 200) -> float:
+    """The median, over random poses within the joint limits, of the longest side of
+    the box around the robot's frame origins (1.0 for a robot without size)."""
+    rng = np.random.default_rng(1)
+    qlo, qhi = np.array([link.qlim for link in robot.links], dtype=float).T
+    origins = np.asarray(robot.frames(qlo + (qhi - qlo) * rng.random((samples, robot.n))),
+                         dtype=float)[..., :3, 3]
+    size = float(np.median(np.ptp(origins, axis=1).max(axis=1)))
+    return size if size > 1e-9 else 1.0
 
 
 def triad_segments(frames: np.ndarray, length: float) -> list:
@@ -93,130 +139,123 @@ def triad_segments(frames: np.ndarray, length: float) -> list:
     return out
 
 
-class FrameLabels(PathCollection):
-    """All frame labels in one artist: the outlines of the texts, placed at points.
-
-    Why not one ``Text`` per frame: Agg renders a ``Text`` glyph by glyph on
-    every draw (about 0.8 ms each, 6 ms for the SSRMS's 8 frames); one
-    collection of ready-made outlines draws all of them in about 0.3 ms.
-    Labels of frames that share an origin (a spherical wrist) are stacked
-    one under the other instead of printed on top of each other.
-    """
-
-    def __init__(self, ax, names, fontsize: float = 9, color="k", alpha: float = 1.0):
-        self.names, self.fontsize = list(names), fontsize
-        super().__init__(self._outlines([0] * len(names)), offsets=np.zeros((len(names), 2)),
-                         offset_transform=ax.transData, facecolors=color, edgecolors="none",
-                         alpha=alpha)
-        # outlines are in points: 1/72 inch, then the figure's inches -> pixels
-        self.set_transform(Affine2D().scale(1 / 72) + ax.figure.dpi_scale_trans)
-        ax.add_collection(self, autolim=False)
-
-    def _outlines(self, rows):
-        # up-right of the point, row k lines lower
-        return [_text_outline(name, self.fontsize, row) for name, row in zip(self.names, rows)]
-
-    def set_points(self, points, tol: float = 1e-9) -> None:
-        """Place label i at ``points[i]`` (data coordinates)."""
-        points = np.asarray(points, dtype=float)
-        self._place_offsets(points)
-        self.set_paths(self._outlines(_rows_of_shared_points(points, tol)))
-
-    def _place_offsets(self, points):
-        self.set_offsets(points)
-
-    def get_points(self) -> np.ndarray:
-        return np.asarray(self.get_offsets(), dtype=float)
-
-
-def _rows_of_shared_points(points, tol):
-    """For each point, how many earlier points are at the same place."""
-    rows = []
-    for i, p in enumerate(points):
-        rows.append(int(np.sum(np.linalg.norm(points[:i] - p, axis=1) <= tol)))
-    return rows
-
-
-_outline_cache: dict = {}
-
-
-def _text_outline(name, fontsize, row):
-    key = (name, fontsize, row)
-    if key not in _outline_cache:
-        _outline_cache[key] = TextPath((4, 3 - 1.25 * fontsize * row), name, size=fontsize)
-    return _outline_cache[key]
-
-
-class FrameLabels3D(FrameLabels):
-    """:class:`FrameLabels` at 3D points, projected with the axes' current view."""
-
-    def __init__(self, ax, names, **style):
-        self._points3d = np.zeros((len(names), 3))
-        super().__init__(ax, names, **style)
-
-    def _place_offsets(self, points):
-        self._points3d = points
-
-    def get_points(self) -> np.ndarray:
-        return self._points3d
-
-    def do_3d_projection(self):
-        # matplotlib's 3D axes call this before drawing, and so does draw()
-        x, y, z = proj3d.proj_transform(*self._points3d.T, self.axes.M)
-        self.set_offsets(np.column_stack([x, y]))
-        return np.min(z) if len(z) else np.nan
-
-    def draw(self, renderer):
-        self.do_3d_projection()
-        super().draw(renderer)
+def line_in_box(point, direction, lo, hi) -> np.ndarray:
+    """The two ends of the piece of the line ``point + t·direction`` inside the box
+    [lo, hi] (matplotlib's 3D axes do not clip lines at their limits)."""
+    t_lo, t_hi = -np.inf, np.inf
+    for p, v, a, b in zip(point, direction, lo, hi):
+        if abs(v) > 1e-12:
+            t1, t2 = sorted(((a - p) / v, (b - p) / v))
+            t_lo, t_hi = max(t_lo, t1), min(t_hi, t2)
+        elif not a <= p <= b:
+            return np.full((2, len(point)), np.nan)
+    if not t_lo <= t_hi:
+        return np.full((2, len(point)), np.nan)
+    return np.array([point + t_lo * direction, point + t_hi * direction])
 
 
 class RobotView:
     """What the 3D and the planar view share: the robot, its frames, ``update``.
 
-    Subclasses make the artists (``_make_artists``) and move them (``_place``).
+    Options: ``triads``, ``labels`` and ``joint_axes`` (what is drawn),
+    ``framing`` ('follow': the limits follow the robot; 'fixed': the whole
+    workspace), ``camera`` (3D: 'iso', 'front', 'side', 'top'), ``zoom``
+    (1 = the robot fills its view), ``title`` (default the robot's name;
+    ``False`` for none), ``color``/``alpha`` (a faint "ghost" robot),
+    ``figsize``/``backend`` (for the figure the view makes), ``ax``/``live``
+    (draw into an existing axes / live figure).
     """
 
     projection = None          # matplotlib projection of the axes: None (2D) or "3d"
 
     def __init__(self, robot, q=None, *, ax=None, live: LiveFigure | None = None,
-                 triads: bool = True, labels: bool = True, color=LINK_COLOR,
-                 alpha: float = 1.0, figsize=None, backend: str = "auto"):
-        self.robot = robot
+                 triads: bool = True, labels: bool = True, joint_axes: bool = False,
+                 color=LINK_COLOR, alpha: float = 1.0, figsize=None, backend: str = "auto",
+                 framing: str = "follow", camera: str = "iso", zoom: float = 1.0, title=None):
+        self.robot = checked_robot(robot)
+        self.framing = as_choice(framing, ("follow", "fixed"), "framing")
+        self.camera = as_choice(camera, ("iso", "front", "side", "top"), "camera")
+        self.zoom = self._checked_zoom(zoom)
+        self.title = robot.name if title is None else (title or "")
         self.box = workspace_box(robot)
-        self.triad_length = TRIAD_FRACTION * float((self.box[1] - self.box[0]).max())
+        self.triad_length = TRIAD_FRACTION * typical_size(robot)
         self.has_tool = not np.allclose(np.asarray(robot.tool, dtype=float), np.eye(4))
+        self.show_triads = as_flag(triads, "triads")
+        self._labels_on = as_flag(labels, "labels")
+        self._joint_axes_on = as_flag(joint_axes, "joint_axes")
+        self.q = one_pose(robot, q)
+        self.frames = self._frames_at(self.q)
+        self.limits = None                    # (lo, hi) of the current frame, when framed
+        self._reframed = False
         if ax is None:
             live = live or LiveFigure(figsize=figsize or self._figsize(), backend=backend)
             ax = live.figure.add_subplot(projection=self.projection)
-            self.setup_axes(ax)
+            self.ax, self.live = ax, live
             self._fit(live.figure)
+            self.setup_axes(ax)
         self.ax, self.live = ax, live
-        self.show_triads, self.show_labels = triads, labels
-        self.artists = self._make_artists(color, alpha)
+        self.artists = self._make_artists(color, as_number(alpha, "alpha"))
         if live is not None:
             live.add_moving(*self.artists)
-        self.update(default_q(robot) if q is None else q, draw=False)
+        self.update(self.q, draw=False)
 
     # --- the public part --------------------------------------------------------
     def update(self, q, draw: bool = True) -> None:
         """Move the robot to ``q`` (radians / length units). ``draw=False`` only
         moves the artists (a panel updating several views draws once)."""
-        frames = np.asarray(self.robot.frames(q), dtype=float)
-        if self.has_tool:                 # the end effector is frame n moved by the tool
-            frames = np.concatenate([frames, (frames[-1] @ self.robot.tool)[None]])
-        self.q = np.array(q, dtype=float)
-        self.frames = frames
-        self._place(frames)
+        self.q = one_pose(self.robot, q)
+        self.frames = self._frames_at(self.q)
+        if self.limits is not None and self.framing == "follow" and framing.needs_reframe(
+                self.ax, self._framed_points()):
+            self.reframe()
+        self._place(self.frames)
         if draw:
             self.draw()
 
     def draw(self) -> None:
-        """Show the current pose (blitting when the view has a live figure)."""
+        """Show the current pose (blitting when the view has a live figure; a full
+        redraw when the frame has just changed)."""
         if self.live is not None:
-            self.live.refresh()
+            if self._reframed:
+                self._reframed = False
+                self.live.redraw()
+            else:
+                self.live.refresh()
         else:
             self.ax.figure.canvas.draw_idle()
+
+    def reframe(self) -> None:
+        """Fit the axes to the robot where it is now (the next draw redraws everything)."""
+        self.limits = self._frame_limits(self.ax)
+        self._reframed = True
+
+    def set_zoom(self, zoom: float, draw: bool = True) -> None:
+        """Zoom the view: 1 frames the robot, 2 shows it twice as large."""
+        self.zoom = self._checked_zoom(zoom)
+        self._refit(draw)
+
+    def set_camera(self, preset: str = "iso", draw: bool = True) -> None:
+        """3D only: 'iso' (the view where every triad reads), 'front', 'side' or 'top'."""
+        self.camera = as_choice(preset, ("iso", "front", "side", "top"), "camera")
+        self._camera_set = None
+        self._refit(draw)
+
+    def show_labels(self, on: bool = True, draw: bool = True) -> None:
+        """Show or hide the frame labels."""
+        self._labels_on = as_flag(on, "on")
+        if self.labels is not None:
+            self.labels.set_visible(self._labels_on)
+        if draw:
+            self.draw()
+
+    def show_joint_axes(self, on: bool = True, draw: bool = True) -> None:
+        """Show or hide the joint axes (dashed lines along z_(i-1))."""
+        self._joint_axes_on = as_flag(on, "on")
+        if self.joint_axes_line is not None:
+            self.joint_axes_line.set_visible(self._joint_axes_on)
+            self._place(self.frames)
+        if draw:
+            self.draw()
 
     @property
     def figure(self):
@@ -229,20 +268,69 @@ class RobotView:
         names = [rf"$\{{S_{{{i}}}\}}$" for i in range(self.robot.n + 1)]
         return names + [r"$\{E\}$"] if self.has_tool else names
 
+    def extent_fraction(self) -> float:
+        """How much of its axes the robot's frame origins span now (see framing)."""
+        return framing.extent_fraction(self.ax, self._framed_points())
+
     def _repr_mimebundle_(self, **kwargs):
         # A view alone in a cell shows its figure.
         return self.live.widget._repr_mimebundle_(**kwargs)
 
+    # --- helpers ----------------------------------------------------------------
+    def _frames_at(self, q) -> np.ndarray:
+        frames = np.asarray(self.robot.frames(q), dtype=float)
+        if self.has_tool:                 # the end effector is frame n moved by the tool
+            frames = np.concatenate([frames, (frames[-1] @ self.robot.tool)[None]])
+        return frames
+
+    def _framed_points(self) -> np.ndarray:
+        return self.frames[:, :3, 3]
+
+    def _refit(self, draw):
+        if self.limits is not None:
+            self.limits = self._frame_limits(self.ax)
+            self._reframed = True
+            self._place(self.frames)
+        if draw:
+            self.draw()
+
+    @staticmethod
+    def _checked_zoom(zoom):
+        zoom = as_number(zoom, "zoom")
+        if not 0.2 <= zoom <= 5:
+            raise DHLabError(f"zoom must be between 0.2 and 5 (1: the robot fills its view), got {zoom:g}.")
+        return zoom
+
+    def _strokes(self, frames) -> np.ndarray:
+        """Points along the links and the triads, for the labels to keep off."""
+        origins = frames[:, :3, 3]
+        t = np.linspace(0, 1, 6)[1:-1, None]
+        along_links = [a + t * (b - a) for a, b in zip(origins[:-1], origins[1:])]
+        s = np.array([0.35, 0.7, 1.0])[:, None]
+        along_axes = [frame[:3, 3] + s * self.triad_length * frame[:3, k]
+                      for frame in frames for k in range(3)] if self.show_triads else []
+        return np.vstack(along_links + along_axes) if along_links or along_axes else np.zeros((0, 3))
+
+    def _joint_axis_points(self, lo, hi) -> np.ndarray:
+        """Long dashed lines through origin i-1 along z_(i-1), i = 1…n, inside the box."""
+        pieces = []
+        for frame in self.frames[:self.robot.n]:
+            pieces += [*line_in_box(frame[:3, 3], frame[:3, 2], lo, hi), np.full(3, np.nan)]
+        return np.array(pieces)
+
     # --- what subclasses provide ------------------------------------------------
     def _figsize(self):
-        return (6, 6)
+        return (5.6, 5.6)
 
     def _fit(self, figure) -> None:
         """Fill a figure that holds only this view."""
 
     def setup_axes(self, ax) -> None:
-        """Limits, labels and aspect of the axes (called for axes the view makes;
-        call it yourself for axes you give it)."""
+        """Limits, labels, title, camera and aspect of the axes (called for axes the
+        view makes; call it yourself for axes you give it)."""
+        raise NotImplementedError
+
+    def _frame_limits(self, ax):
         raise NotImplementedError
 
     def _make_artists(self, color, alpha) -> list:
@@ -257,29 +345,55 @@ class RobotView:
 
 
 class RobotView3D(RobotView):
-    """The robot in a 3D axes with equal scaling, in a fixed box it cannot leave."""
+    """The robot in a 3D axes (orthographic: parallel axes stay parallel), equal
+    scaling, framed around its configuration."""
 
     projection = "3d"
+    _camera_set = None
+    MARGINS = (0.10, 0.06, 0.10, 0.10)      # left, bottom, right, top: room for the tick labels
 
     def setup_axes(self, ax):
-        (x0, y0, z0), (x1, y1, z1) = self.box
-        ax.set(xlim=(x0, x1), ylim=(y0, y1), zlim=(z0, z1), xlabel=self._axis_label("x"),
-               ylabel=self._axis_label("y"), zlabel=self._axis_label("z"))
-        # equal scaling: a cube looks like a cube
-        ax.set_box_aspect(self.box[1] - self.box[0])
-        ax.figure.suptitle(self.robot.name, y=0.985, fontsize="medium")   # a 3D title can be clipped
+        ax.set_proj_type("ortho")
+        ax.set(xlabel=self._axis_label("x"), ylabel=self._axis_label("y"),
+               zlabel=self._axis_label("z"))
+        for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+            axis.labelpad = 8                        # clear of the tick labels
+        if self.title:
+            ax.set_title(self.title, pad=2)         # its own axes' title, never a neighbour's
+        self.limits = self._frame_limits(ax)
 
     def _fit(self, figure):
-        figure.subplots_adjust(left=0, right=0.92, bottom=0.02, top=0.97)
+        left, bottom, right, top = self.MARGINS
+        self.ax.set_position([left, bottom, 1 - left - right, 1 - bottom - top])
+        keep_texts_inside(self.ax)
+
+    def _frame_limits(self, ax):
+        if self.framing == "fixed":
+            lo, hi = self.box
+        else:
+            lo, hi = framing.frame_box(self._framed_points(), pad=0.6 * self.triad_length)
+        ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]))
+        if self._camera_set != self.camera:       # the camera moves only when asked to
+            set_camera(ax, self.camera, frames=self.frames)
+            self._camera_set = self.camera
+        framing.fit_zoom(ax, self.zoom)
+        if self.framing == "follow":
+            lo, hi = framing.zoom_in_on(ax, self._framed_points(), lo, hi, zoom=self.zoom,
+                                         target=framing.TARGET * self.zoom)
+        space_ticks(ax)
+        return lo, hi
 
     def _make_artists(self, color, alpha):
         ax = self.ax
+        self.joint_axes_line, = ax.plot([], [], [], "--", color=JOINT_AXIS_COLOR, lw=1, alpha=alpha,
+                                        visible=self._joint_axes_on)
         self.link_line, = ax.plot([], [], [], "-o", color=color, lw=3, ms=4, alpha=alpha)
         self.axis_lines = [ax.plot([], [], [], "-", color=c, lw=2, alpha=alpha)[0]
                            for c in AXIS_COLORS] if self.show_triads else []
         self.ee_marker, = ax.plot([], [], [], "*", color=EE_COLOR, mec="k", ms=15, alpha=alpha)
-        self.labels = FrameLabels3D(ax, self.frame_labels, alpha=alpha) if self.show_labels else None
-        return [a for a in (self.link_line, *self.axis_lines, self.ee_marker, self.labels) if a]
+        self.labels = FrameLabels3D(ax, self.frame_labels, alpha=alpha, gap=6.0) if self._labels_on else None
+        return [a for a in (self.joint_axes_line, self.link_line, *self.axis_lines, self.ee_marker,
+                            self.labels) if a]
 
     def _place(self, frames):
         origins = frames[:, :3, 3]
@@ -288,7 +402,87 @@ class RobotView3D(RobotView):
             line.set_data_3d(*points.T)
         self.ee_marker.set_data_3d(*origins[-1:].T)
         if self.labels:
-            self.labels.set_points(origins, tol=1e-3 * self.triad_length)
+            self.labels.set_points(origins, tol=1e-3 * self.triad_length, avoid=self._strokes(frames))
+        if self._joint_axes_on:
+            lo, hi = (np.array(lim) for lim in zip(self.ax.get_xlim(), self.ax.get_ylim(), self.ax.get_zlim()))
+            self.joint_axes_line.set_data_3d(*self._joint_axis_points(lo, hi).T)
+
+
+def space_ticks(ax, per_tick_px: float = 90.0) -> None:
+    """3D: as many ticks on each axis as its drawn length holds, one per
+    ``per_tick_px`` pixels (2 to 5): a short, foreshortened axis gets few ticks,
+    so that its tick labels do not collide."""
+    lo = np.array([ax.get_xlim()[0], ax.get_ylim()[0], ax.get_zlim()[0]])
+    hi = np.array([ax.get_xlim()[1], ax.get_ylim()[1], ax.get_zlim()[1]])
+    scale = ax.figure.dpi / 100
+    for k, axis in enumerate((ax.xaxis, ax.yaxis, ax.zaxis)):
+        end = lo.copy()
+        end[k] = hi[k]
+        length = np.ptp(framing.projected(ax, np.array([lo, end])), axis=0)
+        bins = int(np.clip(np.hypot(*length) / (per_tick_px * scale), 1, 4))
+        axis.set_major_locator(MaxNLocator(nbins=bins, min_n_ticks=2))
+
+
+def keep_texts_inside(ax) -> None:
+    """After every full draw of ``ax``'s figure: if a title, axis label or tick label
+    of ``ax`` sticks out of the figure, move (or shrink) the axes and draw again.
+    Full draws are rare in a panel (a new frame, a turn of the camera), so this
+    costs nothing while the sliders move."""
+    busy = []
+
+    def on_draw(event):
+        figure = ax.figure
+        if busy or figure.canvas.is_saving():
+            return
+        for _ in range(3):
+            position = _overflow(ax, event.renderer)
+            if position is None:
+                return
+            ax.set_position(position)
+            busy.append(True)
+            try:
+                figure.canvas.draw()
+            finally:
+                busy.clear()
+
+    ax.figure.canvas.mpl_connect("draw_event", on_draw)
+
+
+def _drawn_texts(ax) -> list:
+    """The texts an axes drew: title, axis labels and the tick labels within the limits."""
+    texts = [t for t in (ax.title, ax._left_title, ax._right_title) if t.get_text()]
+    for axis in ax._axis_map.values():
+        texts.append(axis.label)
+        lo, hi = sorted(axis.get_view_interval())
+        for tick in axis.majorTicks[:len(axis.get_majorticklocs())]:
+            if lo <= tick.get_loc() <= hi and tick.label1.get_visible():
+                texts.append(tick.label1)
+    return [t for t in texts if t.get_visible() and t.get_text()]
+
+
+def _overflow(ax, renderer, pad: float = 4.0):
+    """A new position (figure fraction) for ``ax`` that brings the texts it drew
+    inside the figure (shifted, or shrunk about its centre when they cannot fit),
+    or None when they are inside already."""
+    boxes = [t.get_window_extent(renderer) for t in _drawn_texts(ax)]
+    if not boxes:
+        return None
+    fig = ax.figure.bbox
+    lows = (min(b.x0 for b in boxes), min(b.y0 for b in boxes))
+    highs = (max(b.x1 for b in boxes), max(b.y1 for b in boxes))
+    sizes = (fig.width, fig.height)
+    if all(lo >= pad - 0.5 and hi <= size - pad + 0.5 for lo, hi, size in zip(lows, highs, sizes)):
+        return None
+    p = ax.get_position()
+    px = [p.x0 * fig.width, p.y0 * fig.height, p.width * fig.width, p.height * fig.height]
+    for k, (lo, hi, size) in enumerate(zip(lows, highs, sizes)):
+        if hi - lo > size - 2 * pad:             # cannot fit: shrink (the next pass shifts)
+            center = px[k] + px[2 + k] / 2
+            px[2 + k] *= 0.97 * (size - 2 * pad) / (hi - lo)
+            px[k] = center - px[2 + k] / 2
+        else:
+            px[k] += max(pad - lo, 0) - max(hi - (size - pad), 0)
+    return [px[0] / fig.width, px[1] / fig.height, px[2] / fig.width, px[3] / fig.height]
 
 
 class RobotView2D(RobotView):
@@ -301,19 +495,41 @@ class RobotView2D(RobotView):
     def _figsize(self):
         # a wide workspace (e.g. the P-R mechanism) gets a wide, short figure
         width, height = (self.box[1] - self.box[0])[:2]
-        return (6, float(np.clip(6 * height / width + 0.8, 2.5, 6)))
+        return (6, float(np.clip(6 * height / max(width, 1e-9) + 0.8, 3.4, 6)))
 
     def setup_axes(self, ax):
-        (x0, y0, _), (x1, y1, _) = self.box
-        ax.set(xlim=(x0, x1), ylim=(y0, y1), xlabel=self._axis_label("x"),
-               ylabel=self._axis_label("y"), aspect="equal", title=self.robot.name)
+        ax.set(xlabel=self._axis_label("x"), ylabel=self._axis_label("y"))
+        ax.set_autoscale_on(False)
+        if self.title:
+            ax.set_title(self.title)
         ax.grid(True, alpha=0.3)
+        self.limits = self._frame_limits(ax)
+
+    MARGINS_PX = (72, 56, 18, 34)     # left, bottom, right, top: tick labels, axis labels, title
 
     def _fit(self, figure):
-        figure.set_layout_engine("tight")
+        width, height = figure.bbox.width, figure.bbox.height
+        left, bottom, right, top = (m * figure.dpi / 100 for m in self.MARGINS_PX)
+        self.ax.set_position([left / width, bottom / height, 1 - (left + right) / width,
+                              1 - (bottom + top) / height])
+
+    def _frame_limits(self, ax):
+        if self.framing == "fixed":
+            lo, hi = self.box[0][:2], self.box[1][:2]
+        else:
+            lo, hi = framing.frame_box(self._framed_points()[:, :2], pad=1.0 * self.triad_length)
+        center, half = (lo + hi) / 2, (hi - lo) / 2 / self.zoom
+        if self.framing == "follow":      # equal scaling: widen the shorter side to the axes' shape
+            shape = (ax.get_position().height * ax.figure.bbox.height
+                     / (ax.get_position().width * ax.figure.bbox.width))
+            half = np.maximum(half, half[::-1] * np.array([1 / shape, shape]))
+        ax.set(xlim=(center[0] - half[0], center[0] + half[0]), ylim=(center[1] - half[1], center[1] + half[1]))
+        ax.set_aspect("equal", adjustable="box")
+        return center - half, center + half
 
     def _make_artists(self, color, alpha):
         ax = self.ax
+        self.joint_axes_line = None               # joint axes point out of the page: the ⊙ marks
         self.link_line, = ax.plot([], [], "-o", color=color, lw=3, ms=5, alpha=alpha)
         self.axis_lines, self.out_marks, self.in_marks = [], [], []
         if self.show_triads:
@@ -322,7 +538,7 @@ class RobotView2D(RobotView):
                 self.out_marks.append(ax.plot([], [], ls="", marker=r"$\odot$", ms=13, color=c)[0])
                 self.in_marks.append(ax.plot([], [], ls="", marker=r"$\otimes$", ms=13, color=c)[0])
         self.ee_marker, = ax.plot([], [], "*", color=EE_COLOR, mec="k", ms=15, alpha=alpha)
-        self.labels = FrameLabels(ax, self.frame_labels, alpha=alpha) if self.show_labels else None
+        self.labels = FrameLabels(ax, self.frame_labels, alpha=alpha) if self._labels_on else None
         return [a for a in (self.link_line, *self.axis_lines, *self.out_marks, *self.in_marks,
                             self.ee_marker, self.labels) if a]
 
@@ -337,17 +553,20 @@ class RobotView2D(RobotView):
             self.in_marks[k].set_data(*origins[out_of_page < -0.7].T)
         self.ee_marker.set_data(*origins[-1:].T)
         if self.labels:
-            self.labels.set_points(origins, tol=1e-3 * self.triad_length)
+            self.labels.set_points(origins, tol=1e-3 * self.triad_length, avoid=self._strokes(frames)[:, :2])
 
 
 def robot_view(robot, q=None, *, planar: bool | None = None, **options) -> RobotView:
     """A view of ``robot`` at ``q`` (default: zero, inside the joint limits).
 
     ``planar=None`` picks the 2D view for robots that stay in the xy plane
-    (``robot.is_planar``) and the 3D view otherwise. Other options: ``ax`` and
-    ``live`` (draw into an existing axes / live figure), ``triads``,
-    ``labels``, ``color``, ``alpha``, ``figsize``, ``backend``.
+    (``robot.is_planar``) and the 3D view otherwise. Other options (keyword
+    only): ``ax`` and ``live`` (draw into an existing axes / live figure; call
+    ``view.setup_axes(ax)`` to let the view set limits, labels and title),
+    ``triads``, ``labels``, ``joint_axes``, ``framing``, ``camera``, ``zoom``,
+    ``title``, ``color``, ``alpha``, ``figsize``, ``backend``.
     """
+    checked_robot(robot)
     if planar is None:
         planar = bool(getattr(robot, "is_planar", False))
-    return (RobotView2D if planar else RobotView3D)(robot, q, **options)
+    return (RobotView2D if as_flag(planar, "planar") else RobotView3D)(robot, q, **options)

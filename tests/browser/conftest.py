@@ -22,8 +22,11 @@ from pathlib import Path
 
 import pytest
 
+from labdriver import write_lab_settings
+
 HERE = Path(__file__).parent
-collect_ignore_glob = ["*.ipynb"]      # the demo notebook is opened by the tests, not run by nbval
+collect_ignore_glob = ["*.ipynb", "results/*"]   # notebooks are opened by the tests, not run by nbval
+RESULTS = HERE / "results"             # screenshots and measurements, kept for a look (and by CI)
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
                  "--disable-component-update", "--disable-sync", "--no-first-run"]
 
@@ -80,11 +83,8 @@ class Server:
         self.port = free_port()
         self.token = os.urandom(12).hex()
         self.root = root
-        settings = root / ".settings" / "@jupyterlab" / "apputils-extension"
-        settings.mkdir(parents=True, exist_ok=True)
-        # no news or update pop-ups over the notebook
-        (settings / "notification.jupyterlab-settings").write_text(
-            '{"fetchNews": "false", "checkForUpdates": false}')
+        # no news or update pop-ups over the notebook; every cell kept in the DOM
+        write_lab_settings(root)
         env = dict(os.environ, JUPYTERLAB_SETTINGS_DIR=str(root / ".settings"),
                    JUPYTERLAB_WORKSPACES_DIR=str(root / ".workspaces"),
                    JUPYTER_RUNTIME_DIR=str(root / ".runtime"))
@@ -130,3 +130,37 @@ def start_server():
     yield start
     for server in started:
         server.stop()
+
+
+@pytest.fixture(scope="session")
+def results_dir():
+    """``tests/browser/results``: what the tier leaves behind (screenshots, latency.json)."""
+    RESULTS.mkdir(exist_ok=True)
+    return RESULTS
+
+
+@pytest.fixture(scope="session")
+def lab_root(tmp_path_factory):
+    """A folder for the session's JupyterLab, where the tests put notebook copies."""
+    return tmp_path_factory.mktemp("lab")
+
+
+@pytest.fixture(scope="session")
+def lab_server(lab_root):
+    """One JupyterLab for the whole session (starting one takes seconds), on ``lab_root``."""
+    from labdriver import lab_command
+
+    server = Server(lab_command(lab_root), lab_root, "/api/status?token={token}")
+    yield server
+    server.stop()
+
+
+@pytest.fixture(scope="session")
+def lab_page(browser, lab_server):
+    """One JupyterLab page, 1400 px wide, for the whole session: each test opens
+    its notebook in it, runs it and closes it (loading JupyterLab takes seconds)."""
+    from labdriver import open_lab
+
+    page = open_lab(browser, lab_server)
+    yield page
+    page.close()

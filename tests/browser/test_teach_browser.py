@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 import dhlab
+from labdriver import close_notebook, open_notebook, run_all
 
 HERE = Path(__file__).parent
 TIMEOUT_MS = 120_000
@@ -95,7 +96,7 @@ def check_panel(page, backend: str):
     time.sleep(1.0)                                   # let the last key's update arrive
     text = readout.inner_text()
 
-    shown = slider_values(page)
+    shown = slider_values(page)[:robot.n]          # the joint sliders come first (then e.g. a zoom)
     assert shown[1] == pytest.approx(30.0) and shown[0] > 0
     T = robot.fk(np.radians(shown))
     got = readout_numbers(text)
@@ -111,31 +112,22 @@ def check_panel(page, backend: str):
 
 
 @pytest.mark.parametrize("backend", ["widget", "inline"])
-def test_teach_panel_in_jupyterlab(browser, start_server, tmp_path, backend):
-    notebook_for(backend, tmp_path)
-    server = start_server(["jupyter", "lab", "--ServerApp.ip=127.0.0.1", "--IdentityProvider.token={token}",
-                     "--ServerApp.allow_root=True",
-                     "--LabApp.expose_app_in_browser=True", f"--ServerApp.root_dir={tmp_path}"],
-                    tmp_path, "/api/status?token={token}")
-    page = browser.new_page(viewport={"width": 1500, "height": 1100})
+def test_teach_panel_in_jupyterlab(lab_page, lab_root, results_dir, backend):
+    folder = lab_root / "teach"
+    folder.mkdir(exist_ok=True)
+    notebook_for(backend, folder)
+    path = folder / f"teach_demo_{backend}.ipynb"
+    (folder / "teach_demo.ipynb").rename(path)
+    page = lab_page
     try:
-        page.goto(f"{server.url}/lab/tree/teach_demo.ipynb?token={server.token}", timeout=TIMEOUT_MS)
-        page.wait_for_function("() => window.jupyterapp !== undefined", timeout=TIMEOUT_MS)
-        page.locator(".jp-Notebook").first.wait_for(timeout=TIMEOUT_MS)
-        # the kernel status in the notebook's toolbar, then run every cell
-        page.wait_for_function(
-            "() => { const w = window.jupyterapp.shell.currentWidget;"
-            " return w && w.sessionContext && w.sessionContext.session"
-            " && w.sessionContext.session.kernel && w.sessionContext.session.kernel.status === 'idle'; }",
-            timeout=TIMEOUT_MS)
-        page.evaluate("() => window.jupyterapp.commands.execute('notebook:run-all-cells')")
+        open_notebook(page, f"teach/{path.name}")
+        run_all(page)
         check_panel(page, backend)
-        page.screenshot(path=str(tmp_path / "final.png"))      # kept for a look
     except Exception:
-        page.screenshot(path=str(tmp_path / "failure.png"))
+        page.screenshot(path=str(results_dir / f"teach_demo-{backend}-failure.png"))
         raise
     finally:
-        page.close()
+        close_notebook(page)
 
 
 def test_teach_panel_in_voila(browser, start_server, tmp_path):

@@ -18,7 +18,7 @@ import nbformat
 ROOT = Path(__file__).resolve().parents[3]
 OUT = ROOT / "tests/data/submissions"
 student = nbformat.read(ROOT / "notebooks/08_puma_assignment.ipynb", 4)
-source = nbformat.read(ROOT / "notebooks/source/08_puma_assignment.ipynb", 4)
+source = nbformat.read(ROOT / "dhlab/grading/data/08_puma_assignment.ipynb", 4)
 
 def solution_of(gid):
     for c in source.cells:
@@ -75,7 +75,7 @@ make("mistake_part1.ipynb", {**ALL, "part1_answers": P1.replace("n_links = 7", "
 
 P2_BAD = P2.replace("3: [(-0.0203, 0, 0), (0, 0, 0), (0, 0, 0.3518)]",       # forearm given in frame 2's coordinates
                     "3: [(0, 0, 0.15005), (0.0203, 0, 0.15005), (0.0203, 0.3518, 0.15005)]")
-P2_BAD = P2_BAD.replace("5: [(0, -0.05, 0), (0, 0, 0), (0, 0, 0.056)]",     # left-handed frame 5
+P2_BAD = P2_BAD.replace("5: [(0, -0.05, 0), (0, 0, 0), (0, 0, 0.056)]",     # x5 turned over: still a valid frame 5
                         "5: [(0, 0.05, 0), (0, 0, 0), (0, 0, 0.056)]")
 assert P2_BAD != P2
 make("mistake_part2.ipynb", {**ALL, "part2_answers": P2_BAD})
@@ -132,5 +132,122 @@ def endless():
         yield 1
 chain = endless()'''
 make("hostile_weird_values.ipynb", {"part1_answers": WEIRD, "part2_answers": WEIRD2, "part3_answers": WEIRD3})
+
+# --- one slip, one item (issue 10): a mistake that leaves a valid frame costs only its row -------------
+make("slip_alpha1.ipynb", {**ALL, "part3_answers": P3.replace("T1 = Tz(q1, 0) @ Tx(90, 0)", "T1 = Tz(q1, 0) @ Tx(-90, 0)")})
+make("slip_alpha3.ipynb", {**ALL, "part3_answers": P3.replace("Tx(-90, 0.0203)", "Tx(90, 0.0203)")})
+# the alternative assignment (x4 backwards), with the +180° of θ4 forgotten
+make("slip_theta4_offset.ipynb", {"part1_answers": P1, "part2_answers": ALT_P2,
+                                  "part3_answers": ALT_P3.replace("Tz(q4 + 180, 0.4318)", "Tz(q4, 0.4318)")})
+# every T_i right, the links drawn in another valid set of frames: full marks, and a note
+make("mixed_valid_frames.ipynb", {"part1_answers": P1, "part2_answers": P2, "part3_answers": ALT_P3})
+
+# --- one checking path: numpy, sympy and deg() values are read as the notebook reads them ---------------
+NUMERIC_P1 = """import numpy as np, sympy as sp
+n_links = np.int64(7)
+n_joints = sp.Integer(6)
+joint_types = np.array(list("RRRRRR"))
+x_cases = ["intersect", "parallel", "skew", "intersect", "intersect"]"""
+NUMERIC_P2 = """import numpy as np
+# the world points of the table, and my frames at home from my transformations
+world = {"O": (0, 0, -0.67183), "B": (0, 0, -0.25), "S": (0, 0, 0), "A": (0, -0.15005, 0),
+         "E": (0.4318, -0.15005, 0), "K": (0.4521, -0.15005, 0), "M": (0.4521, -0.15005, 0.3518),
+         "Y": (0.4521, -0.20005, 0.3518), "N": (0.4521, -0.20005, 0.4318), "W": (0.4521, -0.15005, 0.4318),
+         "F": (0.4521, -0.15005, 0.4878), "G1": (0.4521, -0.18005, 0.5278), "G2": (0.4521, -0.18005, 0.4878),
+         "G3": (0.4521, -0.12005, 0.4878), "G4": (0.4521, -0.12005, 0.5278)}
+names = [["O", "B"], ["B", "S", "A"], ["A", "E"], ["E", "K", "M"], ["M", "Y", "N"], ["N", "W", "F"],
+         ["G1", "G2", "G3", "G4"]]
+mine = ((Tz(q1, 0) @ Tx(90, 0)) @ (Tz(q2, 0) @ Tx(0, 0.4318)) @ (Tz(q3, 0.15005) @ Tx(-90, 0.0203))
+        @ (Tz(q4, 0.4318) @ Tx(90, 0)) @ (Tz(q5, 0) @ Tx(-90, 0)) @ (Tz(q6, 0) @ Tx(0, 0)))
+frames = mine.frames(np.zeros(6))
+link_points = {}
+for k, F in enumerate(frames):
+    R, o = F[:3, :3], F[:3, 3]
+    link_points[k] = [tuple(R.T @ (np.array(world[n]) - o)) for n in names[k]]     # numpy floats"""
+NUMERIC_P3 = """import numpy as np, sympy as sp
+from dhlab import deg
+T1 = Tz(q1, 0) @ Tx(deg(90), 0)
+T2 = Tz(q2 + deg(0), 0) @ Tx(0, np.float64(0.4318))
+T3 = Tz(q3, 0.15005) @ Tx(np.float32(-90), 0.0203)
+T4 = Tz(q4, 0.4318) @ Tx(sp.Integer(90), 0)
+T5 = Tz(q5, 0) @ Tx(deg(-90), 0)
+T6 = Tz(q6, 0) @ Tx(0, 0)
+chain = T1 @ T2 @ T3 @ T4 @ T5 @ T6"""
+make("numeric_types.ipynb", {"part1_answers": NUMERIC_P1, "part2_answers": NUMERIC_P2, "part3_answers": NUMERIC_P3})
+
+
+# --- outputs are not the submission (a notebook with 25 MB of saved outputs is made by the test itself,
+# from valid_alternative.ipynb, to keep the repository small); the code itself is limited
+make("hostile_huge_code.ipynb", ALL, extra=[("part1_check", "junk = '" + "y" * 1_200_000 + "'")])
+
+# --- odd names: two students whose names differ only where a file system might mangle them ---------------
+make("Ana María.ipynb", {**ALL, "part3_answers": P3_BAD})
+make("Ana_María.ipynb", ALL)
+
+# --- isolation: hostile notebooks against the package, classmates, the gradebook, the grader -------------
+TAMPER = r'''import dhlab.course.assignment as mine, dhlab.grading.checks as checks, pathlib
+for module in (mine, checks):                  # every later kernel (and the grader) imports these
+    try:
+        with open(module.__file__, "a") as f:
+            f.write("\nPOINTS_TAMPERED = True\n")
+    except OSError as e:
+        print("could not write", module.__file__, e)
+pathlib.Path(mine.__file__).with_name("sneaky.py").write_text("x = 1")'''
+make("hostile_tampers_package.ipynb", ALL, extra=[("part1_check", TAMPER)])
+ESCAPE = r'''import os, subprocess, sys
+code = """import glob, os, time
+time.sleep(4)
+for path in glob.glob('/tmp/**/*.csv', recursive=True) + glob.glob('/tmp/**/*.ipynb', recursive=True):
+    try:
+        open(path, 'w').write('overwritten by a setsid escapee')
+    except OSError:
+        pass
+"""
+subprocess.Popen([sys.executable, "-c", code], start_new_session=True,
+                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)'''
+make("hostile_setsid_escapee.ipynb", ALL, extra=[("part1_check", ESCAPE)])
+CLASSMATES = r'''import glob, os, pathlib
+found = []
+for pid in os.listdir("/proc"):                # the paths of the other submissions, wherever they show
+    for part in ("cmdline", "environ"):
+        try:
+            words = pathlib.Path("/proc", pid, part).read_bytes().decode("utf-8", "replace").split("\0")
+            found += [w.split("=", 1)[-1] for w in words if ".ipynb" in w or ".csv" in w]
+        except OSError:
+            pass
+paths = list(found)
+for folder in {os.path.dirname(p) for p in found} | {"/tmp"}:
+    paths += glob.glob(os.path.join(folder, "**", "*.ipynb"), recursive=True)
+    paths += glob.glob(os.path.join(folder, "**", "*.csv"), recursive=True)
+touched = 0
+for path in set(paths):
+    try:
+        text = open(path).read()
+        open(path, "w").write(text.replace("Tx(0, 0.4318)", "Tx(45, 0.4318)"))   # break a classmate's T2
+        touched += 1
+    except OSError:
+        pass
+print("touched", touched)'''
+make("hostile_edits_classmates.ipynb", ALL, extra=[("part1_check", CLASSMATES)])
+KILLER = r'''import os, signal
+for pid in [os.getppid()] + [int(p) for p in os.listdir("/proc") if p.isdigit()]:
+    if pid != os.getpid():
+        try:
+            os.kill(pid, signal.SIGKILL)         # the runner, the grader, anything it may signal
+        except OSError:
+            pass'''
+make("hostile_kills_everything.ipynb", ALL, extra=[("part2_check", KILLER)])
+FORK = r'''import os, time
+children = 0
+try:
+    for _ in range(5000):
+        if os.fork() == 0:
+            time.sleep(60)
+            os._exit(0)
+        children += 1
+except OSError as e:
+    print("fork stopped after", children, e)'''
+make("hostile_fork_bomb.ipynb", ALL, extra=[("part1_check", FORK)])
+
 if __name__ == "__main__":
     print(sorted(p.name for p in OUT.glob("*.ipynb")))

@@ -1,0 +1,127 @@
+"""What the DH exercise checks share: reading an answer, wording the feedback, joint axes as lines.
+
+Every check of notebooks 5-7 returns a :class:`~dhlab.course.exercises.Feedback` for *any*
+answer: the readers here turn what cannot be read (text, NaN, a dict where a list is
+asked, …) into a reason, never into an exception.
+"""
+from __future__ import annotations
+
+import math
+import numbers
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..lines import Line, relation
+from .answers import Refused, is_unanswered, to_vector
+from .exercises import NOT_ANSWERED, Feedback
+
+ANGLE_TOL = 0.5          # degrees: typed answers are read to half a degree
+
+
+# --- feedback in the style of dhlab.course.exercises ------------------------------------------------
+def _blank(x) -> bool:
+    """Not answered: None or ``...`` (anywhere inside a list, tuple or dict)."""
+    return is_unanswered(x)
+
+
+def _unanswered(name: str) -> Feedback:
+    return Feedback("unanswered", f"{name}: {NOT_ANSWERED}")
+
+
+def _right(name: str, items=()) -> Feedback:
+    return Feedback("correct", f"correct: {name} {'are' if name.startswith('the cases') else 'is'} right.",
+                    items)
+
+
+def _wrong(name: str, items, why: str = "") -> Feedback:
+    verb = "are" if name.startswith("the cases") else "is"
+    return Feedback("wrong", f"{name} {verb} not right yet" + (f": {why}" if why else "."), items)
+
+
+def _num(x: float, digits: int = 4) -> str:
+    """A number for a message: 0.2, -90, 12 (no -0)."""
+    text = f"{round(float(x), digits) + 0.0:.{digits}f}"
+    if "." in text:
+        text = text.rstrip("0").rstrip(".")
+    return "0" if text == "-0" else text
+
+
+def _vec(v, digits: int = 3) -> str:
+    return "(" + ", ".join(_num(x, digits) for x in v) + ")"
+
+
+def _read_numbers(answer, count: int, what: str):
+    """``count`` finite real numbers, or (None, the reason they cannot be read).
+
+    Refuses what is not a list of numbers in a given order (text, a dict, a set), NaN,
+    infinity, complex numbers, ``None`` or ``True`` inside, symbols where numbers are asked.
+    """
+    if isinstance(answer, (dict, set, frozenset)):
+        return None, (f"your answer is a {type(answer).__name__}: give {count} numbers {what}, as a list or "
+                      "tuple in that order.")
+    try:
+        values = to_vector(answer, "your answer", count)
+    except Refused as why:
+        return None, f"{why} Give {count} numbers {what}."
+    if isinstance(values, list):          # sympy expressions with symbols in them
+        return None, f"give {count} numbers {what}, not symbols."
+    return [float(v) for v in values], ""
+
+
+def _whole_number(value):
+    """``value`` as an int when it is a whole number (4, 4.0, np.int64(4)); else None (True, 4.5, nan, 'x')."""
+    if isinstance(value, (bool, np.bool_)):
+        return None
+    if isinstance(value, numbers.Integral):
+        return int(value)
+    if isinstance(value, (float, np.floating)) and math.isfinite(value) and float(value).is_integer():
+        return int(value)
+    return None
+
+
+# --- lines in space (the geometry is dhlab.lines) ----------------------------------------------
+@dataclass(frozen=True)
+class Relation:
+    """How two lines lie: ``kind`` is 'intersect', 'parallel', 'skew' or 'coincident';
+    ``distance`` is the length of their common normal, ``angle`` the angle between
+    their directions in degrees (0…180: 180 means parallel but opposite).
+    :func:`dhlab.lines.relation`'s result, rounded for messages."""
+    kind: str
+    distance: float
+    angle: float
+
+    @property
+    def is_parallel(self) -> bool:
+        return self.kind in ("parallel", "coincident")
+
+
+def axis_relation(p1, u1, p2, u2, tol: float = 1e-9) -> Relation:
+    """The relation of line 1 (through ``p1``, direction ``u1``) and line 2, by
+    :func:`dhlab.lines.relation`. ``tol`` is relative: lines closer than ``tol`` times
+    the size of the coordinates (at least 1) meet; directions less than 1e-9 rad apart
+    are parallel.
+
+    >>> axis_relation([0, 0, 0], [0, 0, 1], [1, 0, 5], [0, 0, -1])
+    Relation(kind='parallel', distance=1.0, angle=180.0)
+    >>> axis_relation([0, 0, 0], [0, 0, 1], [0.2, 0, 0.5], [0, 1, 0]).kind
+    'skew'
+    """
+    a, b = Line(p1, u1), Line(p2, u2)
+    scale = max(1.0, float(np.abs(a.point).max()), float(np.abs(b.point).max()))
+    rel = relation(a, b, tol=tol * scale, angle_tol=1e-9)
+    return Relation(rel.kind, round(rel.distance, 12) + 0.0, round(rel.angle, 9) + 0.0)
+
+
+def _axes_of(robot, q):
+    """Joint axes of ``robot`` at ``q``: points (n,3) and unit directions (n,3); joint k is z_(k-1)."""
+    F = np.asarray(robot.frames(q), dtype=float)
+    return F[:-1, :3, 3], F[:-1, :3, 2]
+
+
+def _row_of(robot, i: int):
+    """(θ, d, a, α) of link i at q = 0, read from its numeric matrix (angles in degrees)."""
+    A = np.asarray(robot.A(i, 0.0), dtype=float)
+    theta = math.atan2(A[1, 0], A[0, 0])
+    a = A[0, 3] * math.cos(theta) + A[1, 3] * math.sin(theta)
+    return math.degrees(theta), float(A[2, 3]), float(a), math.degrees(math.atan2(A[2, 1], A[2, 2]))

@@ -1,0 +1,89 @@
+"""Exercises of notebook 6: a link matrix by hand (6.1) and the wrist centre (6.2)."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import sympy as sp
+
+from .. import robots
+from ..dh import DHRobot
+from ..transforms import dh_matrix
+from .exercises import Feedback, check_matrix, check_value
+from .exercises_dh_common import _blank, _num, _unanswered
+
+__all__ = ["link_exercise_robot", "check_link_matrix", "WRIST_Q_DEG", "check_wrist_centre"]
+
+
+# --- 6.1: one link matrix by hand ---------------------------------------------------------------------
+_SUP = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def _to_robot_symbols(M, robot):
+    """C4 / S4 written as symbols become cos(q4) / sin(q4) of ``robot``'s joint 4."""
+    swap = {}
+    for s in M.free_symbols:
+        text = str(s)
+        if text[:1] in "CS" and text[1:].isdigit() and 1 <= int(text[1:]) <= robot.n:
+            q = robot.q_symbols[int(text[1:]) - 1]
+            swap[s] = sp.cos(q) if text[0] == "C" else sp.sin(q)
+    return M.xreplace(swap)
+
+
+def link_exercise_robot() -> DHRobot:
+    """Exercise 6.1's two-link table: its row 2, (q2 + 90°, l2, 0, −90°), has an offset and
+    a negative twist."""
+    return DHRobot.from_table([("q1", "l1", 0, 90), ("q2 + 90", "l2", 0, -90)], name="exercise 6.1 table",
+                              params={"l1": 1.0, "l2": 0.5})
+
+
+def check_link_matrix(M, i: int = 2, robot=None) -> Feedback:
+    """Check a hand-written ^{i−1}A_i (4x4; C2 / S2 as symbols or cos(q2) / sin(q2)) against
+    link ``i`` of ``robot`` (default: :func:`link_exercise_robot`)."""
+    robot = link_exercise_robot() if robot is None else robot
+    name = f"your {str(i - 1).translate(_SUP)}A{str(i).translate(_SUB)}"
+    if _blank(M):
+        return _unanswered(name)
+    if isinstance(M, sp.MatrixBase):
+        M = _to_robot_symbols(sp.Matrix(M), robot)
+    link, q = robot.links[i - 1], robot.q_symbols[i - 1]
+    mistakes = []
+    if link.is_revolute:
+        theta, d = q + link.offset, link.d
+        if link.offset != 0:
+            degrees = math.degrees(float(link.offset))
+            mistakes.append((dh_matrix(q, d, link.a, link.alpha),
+                             f"you left out the offset: θ{i} = {q} {'+' if degrees > 0 else '−'} "
+                             f"{_num(abs(degrees))}°, so the entries hold cos and sin of the whole θ{i}."))
+    else:
+        theta, d = link.theta, q + link.offset
+    mistakes.append((dh_matrix(theta, d, link.a, -link.alpha),
+                     f"the sign of α{i} is flipped: it is {_num(math.degrees(float(link.alpha)))}°."))
+    mistakes.append((dh_matrix(theta, d, link.a, link.alpha).T,
+                     "you wrote the rows as columns: the whole matrix is transposed."))
+    return check_matrix(M, robot.A(i), name=name, mistakes=mistakes, index_style="math")
+
+
+# --- 6.2: the wrist centre ----------------------------------------------------------------------------
+WRIST_Q_DEG = (30, -45, 60, 90, -30, 45)
+
+
+def check_wrist_centre(p, q_deg=WRIST_Q_DEG, robot=None) -> Feedback:
+    """Check the wrist centre (x, y, z) of a 6-DOF arm with a spherical wrist (the axes of
+    joints 4, 5, 6 meet in O4 = O5) at joint angles ``q_deg`` (degrees).
+    Default robot: seed 002's 6-DOF arm."""
+    robot = robots.seed002_6dof() if robot is None else robot
+    q = np.radians(np.asarray(q_deg, dtype=float))
+    F = np.asarray(robot.frames(q), dtype=float)
+    T = np.asarray(robot.fk(q), dtype=float)
+    centre, p_end, a = F[4, :3, 3], T[:3, 3], T[:3, 2]
+    l4 = float(np.linalg.norm(p_end - centre))
+    mistakes = [(p_end, f"that is the end effector p: the wrist centre is l4 = {_num(l4)} back from p "
+                        "along the approach vector a (the third column of T): p_w = p − l4·a."),
+                (p_end + l4 * a, "you went the wrong way along a: p_w = p − l4·a, not p + l4·a.")]
+    for k in (1, 2, 3, 6):
+        if np.linalg.norm(F[k, :3, 3] - centre) > 1e-6:
+            mistakes.append((F[k, :3, 3], f"that is the origin of frame {k}: the wrist centre is where "
+                                          "the axes of joints 4, 5 and 6 meet (O4 = O5)."))
+    return check_value(p, centre, name="your wrist centre", components=("x", "y", "z"), mistakes=mistakes)

@@ -1,0 +1,171 @@
+"""Exercises of notebook 7: the SSRMS's C++ keyboard control (7.1, 7.3) and its parallel axes (7.2)."""
+from __future__ import annotations
+
+import numpy as np
+
+from .. import robots
+from ..transforms import trans
+from .exercises import Feedback, check_value
+from .exercises_dh_common import _blank, _num, _right, _unanswered, _vec, _whole_number, _wrong
+
+__all__ = ["thlist_slot", "check_thlist_slots", "parallel_pairs", "check_parallel_pairs",
+           "printed_key_position", "check_key_jump"]
+
+
+# --- notebook 7: the SSRMS's C++ keyboard control, and its parallel axes ------------------------------
+def thlist_slot(joint: int) -> int:
+    """Index in seed 000's ``THList`` of joint ``joint``'s Tz[θ, d] factor (the base has slots 0, 1)."""
+    return 2 * joint
+
+
+def check_thlist_slots(slots, robot=None) -> Feedback:
+    """Check ``{joint: THList index}``: the slot a key must overwrite to move each SSRMS joint."""
+    robot = robots.ssrms() if robot is None else robot
+    name = "your THList slots"
+    if _blank(slots):
+        return _unanswered(name)
+    if not isinstance(slots, dict):
+        return _wrong(name, [f"give a dict {{joint: index}} for joints 1 … {robot.n}, not a "
+                             f"{type(slots).__name__}."])
+    items = []
+    for joint in range(1, robot.n + 1):
+        if joint not in slots:
+            items.append(f"joint {joint}: missing.")
+            continue
+        given = _whole_number(slots[joint])
+        if given is None:
+            shown = repr(slots[joint])
+            items.append(f"joint {joint}: {shown if len(shown) <= 30 else shown[:27] + '…'} is not an index "
+                         "(a whole number such as 5).")
+            continue
+        right = thlist_slot(joint)
+        if given == right:
+            continue
+        if given == right + 1:
+            why = (f"THList[{given}] is link {joint}'s Tx[α, a] factor, which never changes: the key must "
+                   f"rebuild the factor that holds θ{joint}")
+        elif given == right - 2:
+            owner = "the base" if joint == 1 else f"joint {joint - 1}"
+            why = (f"THList[{given}] is the Tz factor of {owner}: count the base's pair too (the base is "
+                   "a model of its own, with its Tz and Tx)")
+        else:
+            why = "the list holds two factors per link, Tz then Tx, and the base's pair comes first"
+        items.append(f"joint {joint}: not THList[{given}]: {why}.")
+    return _wrong(name, items) if items else _right(
+        name, ["Joint k's key overwrites THList[2k], its Tz[θ_k, d_k] factor."])
+
+
+def parallel_pairs(robot=None, samples: int = 200, seed: int = 0) -> set:
+    """Pairs (j, k), j < k, of joints whose axes are parallel at zero and at every one of
+    ``samples`` random configurations within the joint limits.
+
+    >>> sorted(parallel_pairs())                 # the SSRMS
+    [(3, 4), (3, 5), (4, 5)]
+    """
+    robot = robots.ssrms() if robot is None else robot
+    rng = np.random.default_rng(seed)
+    lo, hi = robot.qlim.T
+    Q = np.vstack([np.zeros(robot.n), lo + (hi - lo) * rng.random((samples, robot.n))])
+    Z = np.asarray(robot.frames(Q), dtype=float)[:, :-1, :3, 2]      # (N, n, 3): axis of joint k = z_(k-1)
+    return {(j + 1, k + 1) for j in range(robot.n) for k in range(j + 1, robot.n)
+            if np.all(np.linalg.norm(np.cross(Z[:, j], Z[:, k]), axis=1) < 1e-9)}
+
+
+def _counterexample(robot, j: int, k: int):
+    """One joint at 30° (degrees, others 0) where the axes of joints j and k are not parallel."""
+    for m in range(robot.n):
+        q = np.zeros(robot.n)
+        q[m] = 30.0
+        F = np.asarray(robot.frames(np.radians(q)), dtype=float)
+        if np.linalg.norm(np.cross(F[j - 1, :3, 2], F[k - 1, :3, 2])) > 1e-6:
+            return q
+    return None
+
+
+def _read_pairs(pairs):
+    """A set or list of pairs of whole numbers as a set of sorted tuples; None if it is not one."""
+    if isinstance(pairs, (str, dict)) or not isinstance(pairs, (set, frozenset, list, tuple)):
+        return None
+    given = set()
+    for pair in pairs:
+        if isinstance(pair, (str, dict)) or not isinstance(pair, (set, frozenset, list, tuple)):
+            return None
+        numbers = [_whole_number(v) for v in pair]
+        if None in numbers:
+            return None
+        given.add(tuple(sorted(numbers)))
+    return given
+
+
+def check_parallel_pairs(pairs, robot=None) -> Feedback:
+    """Check the set of joint pairs (j, k) whose axes stay parallel at every configuration
+    (default robot: the SSRMS)."""
+    robot = robots.ssrms() if robot is None else robot
+    name = "your set of parallel pairs"
+    if _blank(pairs):
+        return _unanswered(name)
+    given = _read_pairs(pairs)
+    if given is None:
+        return _wrong(name, ["give a set of pairs of joint numbers, e.g. {(1, 2), (2, 5)}."])
+    if any(len(p) != 2 or p[0] == p[1] or not all(1 <= v <= robot.n for v in p) for p in given):
+        return _wrong(name, [f"each pair must be two different joint numbers from 1 to {robot.n}."])
+    right = parallel_pairs(robot)
+    F0 = np.asarray(robot.frames(robot.qz), dtype=float)
+    items = []
+    for j, k in sorted(given - right):
+        at_zero = np.linalg.norm(np.cross(F0[j - 1, :3, 2], F0[k - 1, :3, 2])) < 1e-9
+        q = _counterexample(robot, j, k)
+        shown = "" if q is None else f": at θ = {_vec(q, 0)}° they are not"
+        items.append(f"joints {j} and {k}: " + ("parallel at θ = 0, but not at every configuration"
+                     if at_zero else "their axes are not parallel") + shown + ".")
+    missed = len(right - given)
+    if missed:          # how many, not which: finding them is the exercise
+        items.append(f"{missed} pair{'s' if missed > 1 else ''} of joints whose axes stay parallel at every "
+                     f"configuration {'are' if missed > 1 else 'is'} missing from your set (being parallel is "
+                     "transitive).")
+    return _wrong(name, items) if items else _right(
+        name, ["Exactly these pairs stay parallel: " + ", ".join(f"({j}, {k})" for j, k in sorted(right)) + "."])
+
+
+def printed_key_position(joints, robot=None) -> np.ndarray:
+    """Where the SSRMS's end effector would be, all joints at 0, after one press of the key of
+    each joint in ``joints`` (one joint number or several) with the seed's printed handler
+    (``THList[2k] = THx``, erratum 000-2).
+
+    At that moment THx holds the last Tx that ``configurarTH`` built, the gripper's
+    Tx[0, 0] = identity: joint k's factor Tz[θ_k, d_k] becomes the identity.
+
+    >>> printed_key_position(1).round(6).tolist()
+    [24.0, 0.0, -13.0]
+    """
+    robot = robots.ssrms() if robot is None else robot
+    pressed = {int(joints)} if np.ndim(joints) == 0 else {int(j) for j in joints}
+    T = np.eye(4)
+    for k in range(1, robot.n + 1):
+        A = np.asarray(robot.A(k, 0.0), dtype=float)
+        if k in pressed:
+            A = np.linalg.solve(trans(0, 0, float(robot.links[k - 1].d)), A)   # only Tx[α_k, a_k] is left
+        T = T @ A
+    return T[:3, 3].round(12) + 0.0
+
+
+def check_key_jump(position, joints=(2, 5), robot=None) -> Feedback:
+    """Check where the end effector ends up when the keys of ``joints`` are pressed once each
+    with the printed (wrong) handler of seed 000, all joints at 0."""
+    robot = robots.ssrms() if robot is None else robot
+    joints = (joints,) if np.ndim(joints) == 0 else tuple(joints)
+    correct = np.asarray(robot.fk(robot.qz), dtype=float)[:3, 3]
+    mistakes = [(correct, "that is where the correct code (THz) puts it. With the printed THx, slot "
+                          "THList[2k] receives the identity: the last Tx that configurarTH built is the "
+                          "gripper's Tx[0, 0].")]
+    if len(joints) > 1:
+        for k in joints:
+            mistakes.append((printed_key_position(k, robot), f"that is the jump of joint {k}'s key alone: "
+                             "each pressed key overwrites its own slot, and the slots stay overwritten."))
+    feedback = check_value(position, printed_key_position(joints, robot), name="your position",
+                           components=("x", "y", "z"), mistakes=mistakes)
+    if feedback.ok:
+        lost = ", ".join(f"d{k} = {_num(float(robot.links[k - 1].d))}" for k in joints)
+        feedback.items.append(f"The factors Tz[θk, dk] of joints {', '.join(map(str, joints))} became the "
+                              f"identity: those joints are frozen and their offsets ({lost}) are lost.")
+    return feedback

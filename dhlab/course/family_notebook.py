@@ -1,0 +1,286 @@
+"""The "Your robot" section of the assignment notebook, for one student's variant.
+
+:func:`release_notebook` turns the generated student notebook (the template) into one
+student's: the robot's section becomes "Your robot" (its figure, axes table and points
+table), a locked cell (:func:`seam_source`) makes the student's variant the robot of the
+assignment, the answer stubs name this robot's links and transformations, and the signed
+record goes into ``metadata["dhlab"]``. The template is changing with the course, so
+every step finds its cell by its nbgrader ``grade_id`` and says so (``notes``) when a
+cell is not there, instead of failing. :func:`prepare_submission` is the grader's side:
+it rewrites the locked cell from a verified variant before a submission runs.
+"""
+from __future__ import annotations
+
+import base64
+import copy
+import html
+import io
+import json
+import re
+
+from ..grading import variants as V
+from .family_model import AssignmentRobot
+
+__all__ = ["SEAM_CELL_ID", "use_variant", "active_robot", "seam_source", "release_notebook", "prepare_submission"]
+
+SEAM_CELL_ID = "dhlab-your-robot"
+
+
+# --- the seam: the notebook's robot ------------------------------------------------------------------
+
+_ACTIVE = {"robot": None, "variant": None}
+
+
+def use_variant(data, student_id: str | None = None) -> AssignmentRobot:
+    """Make the variant ``data`` (a dict, as released) the robot of this notebook's assignment;
+    returns its :class:`~dhlab.course.family_model.AssignmentRobot`. The released notebook calls
+    it in its "Your robot" cell; :func:`active_robot` then gives it to the checks."""
+    v = data if isinstance(data, V.Variant) else V.Variant.from_dict(data)
+    robot = V.robot_of_variant(v)
+    _ACTIVE.update(robot=robot, variant=v, student_id=student_id)
+    return robot
+
+
+def active_robot():
+    """The robot set by :func:`use_variant`, or None (then the assignment is the PUMA 560)."""
+    return _ACTIVE["robot"]
+
+
+# --- the notebook, for one student -------------------------------------------------------------------
+
+
+def _grade_id(cell) -> str | None:
+    return cell.get("metadata", {}).get("nbgrader", {}).get("grade_id")
+
+
+def _find(cells, grade_id) -> int | None:
+    return next((i for i, c in enumerate(cells) if _grade_id(c) == grade_id), None)
+
+
+def _lines(text: str) -> list:
+    """A cell source as the list of lines nbformat writes."""
+    parts = text.split("\n")
+    return [p + "\n" for p in parts[:-1]] + ([parts[-1]] if parts[-1] else [])
+
+
+def _markdown(cell_id: str, text: str) -> dict:
+    return {"cell_type": "markdown", "id": cell_id, "metadata": {}, "source": _lines(text)}
+
+
+def _code(cell_id: str, text: str, grade_id: str, outputs=()) -> dict:
+    meta = {"deletable": False, "editable": False,
+            "nbgrader": {"grade": False, "grade_id": grade_id, "locked": True, "schema_version": 3, "solution": False}}
+    return {"cell_type": "code", "execution_count": None, "id": cell_id, "metadata": meta,
+            "outputs": list(outputs), "source": _lines(text)}
+
+
+def _source(cell) -> str:
+    src = cell.get("source", "")
+    return "".join(src) if isinstance(src, list) else src
+
+
+def _set_source(cell, text: str) -> None:
+    cell["source"] = _lines(text)
+    if cell.get("cell_type") == "code":
+        cell["outputs"], cell["execution_count"] = [], None
+
+
+def seam_source(record: dict) -> str:
+    """The locked cell that makes the student's variant the assignment's robot."""
+    n = len(record["variant"]["senses"])
+    names = ", ".join(f"q{i}" for i in range(1, n + 1))
+    variant_text = json.dumps(record["variant"], sort_keys=True)
+    return ("# Your robot: drawn for you and signed by your teacher. Do not edit this cell.\n"
+            "from dhlab.course.family_notebook import use_variant\n"
+            f"my_robot = use_variant({variant_text},\n"
+            f"                       student_id={json.dumps(record['student_id'])})\n"
+            f"{names} = joint_variables({n})     # the joint variables q_i of your robot")
+
+
+def _intro(robot, record) -> str:
+    from .family import spec
+    s = spec(record["variant"]["family"])
+    n, kinds = robot.n, robot.kinds
+    joints = ", ".join(f"joint {i} {'prismatic' if k == 'P' else 'revolute'}" for i, k in enumerate(kinds, 1)
+                       if k == "P") or "all revolute"
+    mount = "hangs from a ceiling plate" if robot.mount["mount"] == "ceiling" else "stands on a floor plate"
+    six = ("" if n == 6 else
+           f"\n\n**Your robot has {n} joints**: where the parts below are written for six, read {n} — "
+           f"`x_cases` has {n - 1} words, the transformations are T1…T{n}, frame {n} is the end effector's.")
+    who = html.escape(record["student_id"])
+    return (f"## Your robot\n\nThis notebook is for **{who}**. Your robot is a **{robot.name}**: "
+            f"a {s.name} whose lengths, home pose, positive senses and mounting were changed for you, so its DH "
+            f"table is yours to work out — it is in no book. It has {n} joints ({joints}) and {mount}.\n\n"
+            "The figure shows it in its **home pose** ($q_i = 0$ for every joint). Each joint axis is dashed; its "
+            "black arrow is the axis's **positive direction**: a revolute joint turns by the right-hand rule about "
+            "it (purple curled arrow), a prismatic joint slides along it (purple arrow). The tables give the "
+            "axes and the links' points in numbers (metres, world frame).\n\n"
+            "What the exercise fixes:\n\n"
+            "* **Frame 0** is the world frame drawn ($x_0$ red, $y_0$ green, $z_0$ blue): its origin lies on "
+            "joint 1's axis and $z_0$ along it. Link 0, the base, is given in it.\n"
+            "* **The joint variables** $q_i$ are measured from the home pose, positive as the arrows show.\n"
+            f"* **Frame {n}**, the end effector's, has its origin at the end point in the axes table, and "
+            f"$z_{n}$ along joint {n}'s axis." + six)
+
+
+def _spec_name(record) -> str:
+    from .family import spec
+    return spec(record["variant"]["family"]).name
+
+
+_WORDS = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight"}
+
+
+def _comments_only(source: str) -> tuple:
+    """(comment lines, the answer marker line or None) when a stub is only comments, else None."""
+    lines = [ln for ln in source.split("\n") if ln.strip()]
+    if not lines or not all(ln.lstrip().startswith("#") for ln in lines):
+        return None
+    marker = lines[-1] if lines[-1].strip().upper().startswith("# YOUR") else None
+    return (lines[:-1] if marker else lines), marker
+
+
+def _with_marker(text: str, marker) -> str:
+    return text + ("\n" + marker if marker else "")
+
+
+def _part1_stub(robot, source: str) -> str | None:
+    n = robot.n
+    new, count = re.subn(r"a list of \w+ words, for x1 … x\d+",
+                         f"a list of {_WORDS.get(n - 1, n - 1)} words, for x1 … x{n - 1}", source)
+    return new if count or n == 6 else None
+
+
+def _part2_stub(robot, source: str) -> str | None:
+    lines = source.split("\n")
+    start = next((i for i, ln in enumerate(lines) if ln.startswith("link_points = {")), None)
+    end = next((i for i in range(start, len(lines)) if lines[i].strip() == "}"), None) if start is not None else None
+    if start is not None and end is not None:              # the stub is a dict to fill in
+        body = []
+        for k, link in enumerate(robot.points):
+            names = ", ".join(name for name, _ in link)
+            where = "in frame 0 (the world frame)" if k == 0 else f"in frame {k}"
+            body.append(f"    {k}: ...,   # {names:<18} {where}")
+        return "\n".join(lines[:start + 1] + body + lines[end:])
+    comments = _comments_only(source)
+    if comments is None:
+        return None
+    links = [f"link {k}: " + ", ".join(name for name, _ in link) + (" (in frame 0, the world frame)" if k == 0 else "")
+             for k, link in enumerate(robot.points)]
+    rows, row = [], "#  "
+    for item in links:
+        if len(row) + len(item) > 100:
+            rows.append(row)
+            row = "#  "
+        row += " " + item + "  "
+    rows.append(row)
+    n = robot.n
+    text = (f"# Part 2: write link_points below: for each link k = 0 … {n}, its points in its own frame k\n"
+            "# (metres), in the table's order:\n" + "\n".join(r.rstrip() for r in rows) + "\n"
+            f"# as a dict {{0: [(x, y, z), (x, y, z)], 1: [...], ...}} (or a list of {n + 1} lists).")
+    return _with_marker(text, comments[1])
+
+
+def _part3_stub(robot, source: str) -> str | None:
+    n = robot.n
+    lines = source.split("\n")
+    rows = [i for i, ln in enumerate(lines) if re.fullmatch(r"T\d+ = \.\.\.\s*", ln)]
+    if rows:                                               # the stub is T1 = ... lines
+        new = [f"T{i} = ..." for i in range(1, n + 1)]
+        return "\n".join(lines[:rows[0]] + new + lines[rows[-1] + 1:])
+    comments = _comments_only(source)
+    if comments is None:
+        return None
+    prismatic = [i for i, k in enumerate(robot.kinds, 1) if k == "P"]
+    variable = ("θ_i with its joint variable for a revolute joint" +
+                (f", d_i for a prismatic one (joint {', '.join(map(str, prismatic))})" if prismatic else "") +
+                ": q3, q3 - 90, -q3 + 180, ...")
+    text = (f"# Part 3: write T1 … T{n} below, each T_i = Tz(θ_i, d_i) @ Tx(α_i, a_i) (degrees and metres,\n"
+            f"# {variable}), then\n"
+            f"# chain = {' @ '.join(f'T{i}' for i in range(1, n + 1))}")
+    return _with_marker(text, comments[1])
+
+
+def _outputs(obj, figure: bool) -> list:
+    """The cell outputs that show ``obj`` (a table, or a figure as a PNG), as a kernel would."""
+    if figure:
+        png = obj.png() if hasattr(obj, "png") else _png(obj)
+        data = {"image/png": base64.b64encode(png).decode("ascii"), "text/plain": ["<Figure>"]}
+        return [{"data": data, "metadata": {}, "output_type": "display_data"}]
+    data = {"text/html": _lines(obj._repr_html_()), "text/plain": _lines(repr(obj))}
+    return [{"data": data, "metadata": {}, "output_type": "display_data"}]
+
+
+def _png(fig) -> bytes:
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", metadata={"Software": None})
+    return buffer.getvalue()
+
+
+def release_notebook(template: dict, record: dict, figures: bool = True) -> tuple:
+    """The student's notebook (a dict, nbformat 4) from the template and the signed record.
+    Returns (notebook, notes): notes name the template cells that could not be adapted."""
+    robot = use_variant(record["variant"], student_id=record["student_id"])
+    nb = copy.deepcopy(template)
+    cells, notes = nb["cells"], []
+    setup = _find(cells, "setup")
+    if setup is None:
+        setup = next((i for i, c in enumerate(cells) if c.get("cell_type") == "code"), -1)
+        notes.append("no 'setup' cell: the robot cell goes after the first code cell")
+    seam = _code(SEAM_CELL_ID, seam_source(record), "your_robot")
+    replaced = {}
+    for gid, text, obj, is_fig in (("robot_figure", "my_robot.figure()", robot.figure if figures else None, True),
+                                   ("axes_table", "my_robot.axes_table()", robot.axes_table, False),
+                                   ("points_table", "my_robot.points_table()", robot.points_table, False)):
+        i = _find(cells, gid)
+        outputs = _outputs(obj(), is_fig) if obj is not None else []
+        if i is None:
+            notes.append(f"no {gid!r} cell in the template: added to 'Your robot'")
+            replaced[gid] = _code(f"dhlab-{gid}", text, gid, outputs)
+            continue
+        _set_source(cells[i], text)
+        cells[i]["outputs"] = outputs
+    figure = _find(cells, "robot_figure")
+    if figure is not None and figure > setup + 1 and cells[figure - 1].get("cell_type") == "markdown" \
+            and _source(cells[figure - 1]).startswith("## The robot"):
+        _set_source(cells[figure - 1], _intro(robot, record))     # the robot's section becomes "Your robot"
+        where, extra = figure, [seam]
+    else:
+        where, extra = setup + 1, [_markdown("dhlab-your-robot-intro", _intro(robot, record)), seam]
+    extra += list(replaced.values())
+    title = _source(cells[0]) if cells and cells[0].get("cell_type") == "markdown" else ""
+    if title.startswith("# "):
+        first, _, rest = title.partition("\n")
+        _set_source(cells[0], f"# {first[2:].split('·')[0].strip()} · The DH assignment: your own "
+                              f"{_spec_name(record)}\n{rest}")
+    else:
+        notes.append("no title cell: the notebook's title was left as in the template")
+    for gid, fix in (("part1_answers", _part1_stub), ("part2_answers", _part2_stub),
+                     ("part3_answers", _part3_stub)):
+        i = _find(cells, gid)
+        new = fix(robot, _source(cells[i])) if i is not None else None
+        if new is None:
+            notes.append(f"the {gid!r} cell was left as in the template")
+        else:
+            _set_source(cells[i], new)
+    cells[where:where] = extra
+    nb.setdefault("metadata", {})[V.METADATA_KEY] = record
+    return nb, notes
+
+
+def prepare_submission(nb: dict, variant, student_id: str) -> dict:
+    """A copy of ``nb`` whose "Your robot" cell is rewritten from ``variant`` (verified by the
+    grader), so whatever the student did to that cell, the kernel builds the right robot."""
+    nb = copy.deepcopy(nb)
+    cells = nb.setdefault("cells", [])
+    seam = _code(SEAM_CELL_ID, seam_source({"variant": variant.to_dict(), "student_id": student_id}), "your_robot")
+    found = [i for i, c in enumerate(cells) if c.get("id") == SEAM_CELL_ID or _grade_id(c) == "your_robot"]
+    for i in reversed(found[1:]):
+        del cells[i]
+    if found:
+        cells[found[0]] = seam
+    else:
+        setup = _find(cells, "setup")
+        setup = setup if setup is not None else next((i for i, c in enumerate(cells) if c.get("cell_type") == "code"), -1)
+        cells.insert(setup + 1, seam)
+    return nb

@@ -1,0 +1,106 @@
+"""Checking words: :func:`check_choice` (a choice or a short answer) and :func:`check_terms`
+(a glossary: a word for each term). Text is compared without case, accents, hyphens or a
+leading article, so "The End-Effector" and "end effector" are the same answer, and so are
+"Azul" and "azul".
+
+>>> check_choice("Azul", "blue", accepted=("azul",))
+✓ correct: your answer is right.
+"""
+from __future__ import annotations
+
+import unicodedata
+
+from .answers import is_unanswered
+from .feedback import Feedback, correct, unanswered, wrong
+
+__all__ = ["check_choice", "check_terms", "words"]
+
+
+def words(text) -> str:
+    """'End-Effector ' -> 'end effector'; accents dropped ('eslabón' -> 'eslabon')."""
+    text = unicodedata.normalize("NFKD", str(text))
+    text = "".join(ch for ch in text if not unicodedata.combining(ch)).casefold()
+    for sep in ("-", "_", "/", ".", ",", "!", "?", "'", '"'):
+        text = text.replace(sep, " ")
+    parts = text.split()
+    if parts and parts[0] in ("the", "a", "an", "el", "la", "los", "las"):
+        parts = parts[1:]
+    return " ".join(parts)
+
+
+def _norm(value, textual: bool):
+    if textual:
+        return words(value)
+    try:
+        hash(value)
+    except TypeError:
+        return repr(value)
+    return value
+
+
+def check_choice(student, correct_answer, *, name: str = "your answer", accepted=(), explanations=None) -> Feedback:
+    """A choice or a short word answer: ``correct_answer`` (or one of ``accepted``) passes.
+
+    ``explanations`` maps wrong answers to what is wrong with them.
+
+    >>> check_choice("Red", "green", name="the colour of y", explanations={"red": "red is the x axis."})
+    ✗ the colour of y is not right yet.
+      • red is the x axis.
+    """
+    if is_unanswered(student):
+        return unanswered(name)
+    textual = isinstance(correct_answer, str)
+    if textual and not isinstance(student, str):
+        return wrong(name, [f"{name} is a word: write it as text, in quotes (you gave {_short(student)})."])
+    mine = _norm(student, textual)
+    if mine in {_norm(correct_answer, textual), *(_norm(a, textual) for a in accepted)}:
+        return correct(name)
+    for wrong_answer, why in (explanations or {}).items():
+        if mine == _norm(wrong_answer, textual):
+            return wrong(name, [why])
+    return wrong(name, [f"you answered {_short(student)}, which is not right."])
+
+
+def _short(v) -> str:
+    text = repr(v)
+    return text if len(text) <= 40 else text[:37] + "…"
+
+
+def check_terms(student: dict, expected: dict, *, name: str = "your glossary") -> Feedback:
+    """Words for terms, e.g. Spanish -> English: ``expected`` maps each term to its
+    answer (or a tuple of accepted answers). Says which terms are wrong, missing,
+    or given the answer of another term.
+
+    >>> check_terms({"eslabón": "joint", "articulación": "joint"},
+    ...             {"eslabón": "link", "articulación": "joint"}, name="the glossary")
+    ✗ the glossary is not right yet.
+      • eslabón: you wrote 'joint', which is the English for articulación.
+    """
+    if not isinstance(student, dict):
+        return unanswered(name) if is_unanswered(student) else wrong(
+            name, [f"{name} must be a dict {{term: answer, …}}, as in the cell."])
+    accepted = {term: {words(a) for a in (v if isinstance(v, (tuple, list, set)) else (v,))}
+                for term, v in expected.items()}
+    given = {words(k): v for k, v in student.items()}
+    items, empty = [], 0
+    for term, answers in accepted.items():
+        value = given.get(words(term))
+        if value is None or value is Ellipsis or (isinstance(value, str) and value.strip() in ("", "...")):
+            empty += 1
+            continue
+        if not isinstance(value, str):
+            items.append(f"{term}: you wrote {_short(value)}; write the English word(s) as text, in quotes.")
+            continue
+        if words(value) in answers:
+            continue
+        other = next((t for t, a in accepted.items() if t != term and words(value) in a), None)
+        items.append(f"{term}: you wrote {value!r}, which is the English for {other}." if other
+                     else f"{term}: you wrote {value!r}, which is not right.")
+    if empty == len(accepted):
+        return unanswered(name)
+    if empty:
+        items.append(f"{empty} term{'s are' if empty > 1 else ' is'} still empty (...).")
+    unknown = sorted(k for k in given if k not in {words(t) for t in accepted})
+    if unknown and not items:
+        items.append(f"{', '.join(map(repr, unknown))}: not a term of this glossary; keep the terms of the cell.")
+    return correct(name) if not items else wrong(name, items)

@@ -1,0 +1,242 @@
+"""Each submission runs alone: its own user, its own folder, and nothing left behind.
+
+The grader (:mod:`dhlab.grading.cli`) decides once per batch how far it can isolate
+the submissions (:func:`setup`):
+
+* **as root** (the usual way to grade untrusted work): one unprivileged user per
+  parallel job, ``dhlab-grade-1`` … ``dhlab-grade-N``, created on demand (``useradd``;
+  ``nobody`` when users cannot be created, then one job at a time). Each kernel runs
+  as its job's user inside a private mount namespace (:mod:`dhlab.grading.sandbox`):
+  it cannot write dhlab, see the submissions folder, read the gradebook or the other
+  submissions' copies (root's private folders), or signal the grader. After each
+  submission, **every process of that user** is killed (:func:`kill_user`), so a
+  process that left its process group (``setsid``, a double fork) dies too.
+* **not as root**: the kernels run as the grader's own user. The limits still
+  apply, the gradebook is still written row by row, but a submission could read
+  the others, and a process that leaves its process group *and* clears its
+  environment can outlive its submission. :func:`setup` says so, and the
+  gradebook's status column repeats it.
+
+:func:`fingerprint` hashes the **whole** installed ``dhlab`` package (every file,
+compiled modules in ``__pycache__`` included; runners and kernels write none); the
+grader compares it before and after every submission and refuses to go on when it
+changed.
+"""
+from __future__ import annotations
+
+import hashlib
+import os
+import pwd
+import queue
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+__all__ = ["Isolation", "setup", "kill_user", "kill_token", "fingerprint", "file_digests", "changed_files",
+           "package_dir", "USER_PREFIX"]
+
+USER_PREFIX = "dhlab-grade-"
+SANDBOX = Path(__file__).resolve().with_name("sandbox.py")
+
+
+def package_dir() -> Path:
+    """The folder of the installed dhlab package."""
+    return Path(__file__).resolve().parents[1]
+
+
+def file_digests(folder: Path | None = None) -> dict:
+    """{path relative to the package: SHA-256} of every file of the installed dhlab."""
+    folder = Path(folder or package_dir())
+    out = {}
+    for root, dirs, files in os.walk(folder):
+        dirs.sort()
+        for name in sorted(files):
+            path = Path(root, name)
+            rel = str(path.relative_to(folder))
+            try:
+                data = path.read_bytes() if not path.is_symlink() else b"->" + os.readlink(path).encode()
+                out[rel] = hashlib.sha256(data).hexdigest()
+            except OSError as e:
+                out[rel] = f"unreadable {e.errno}"
+    return out
+
+
+def changed_files(before: dict, after: dict) -> list:
+    """The files added, removed or changed between two :func:`file_digests`."""
+    return sorted(k for k in set(before) | set(after) if before.get(k) != after.get(k))
+
+
+def fingerprint(folder: Path | None = None) -> str:
+    """A hash of every file of the installed dhlab (names and contents, compiled modules included)."""
+    h = hashlib.sha256()
+    for rel, digest in file_digests(folder).items():
+        h.update(rel.encode("utf-8", "surrogateescape") + b"\0" + digest.encode() + b"\0")
+    return h.hexdigest()
+
+
+@dataclass
+class Isolation:
+    """How the submissions of one batch are kept apart."""
+    mode: str                                   # "user" or "none"
+    why: str = ""                               # what is not protected, for the status and the report
+    users: list = field(default_factory=list)   # (name, uid, gid) per job
+    jobs: int = 1
+    base: Path | None = None                    # root of the kernels' own folders
+    _free: queue.Queue = field(default_factory=queue.Queue, repr=False)
+
+    def note(self) -> str:
+        """The words the gradebook's status carries when the submissions are not fully apart."""
+        return f"not isolated: {self.why}" if self.why else ""
+
+    def acquire(self):
+        return self._free.get()
+
+    def release(self, user) -> None:
+        self._free.put(user)
+
+    def workdir(self, user) -> Path:
+        """A fresh folder for one submission's kernel, owned by its user (mode 0700)."""
+        folder = Path(tempfile.mkdtemp(prefix="kernel-", dir=self.base))
+        if user is not None:
+            os.chown(folder, user[1], user[2])
+        return folder
+
+    def cleanup(self, user, workdir: Path, token: str) -> None:
+        """End every process the submission started, then remove its folder."""
+        if user is not None:
+            kill_user(user[1])
+        kill_token(token)
+        shutil.rmtree(workdir, ignore_errors=True)
+
+
+def _ensure_user(name: str):
+    try:
+        entry = pwd.getpwnam(name)
+    except KeyError:
+        useradd = shutil.which("useradd") or "/usr/sbin/useradd"
+        proc = subprocess.run([useradd, "--system", "--no-create-home", "--home-dir", "/nonexistent",
+                               "--shell", "/usr/sbin/nologin", "--user-group", name],
+                              capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise OSError(proc.stderr.strip() or f"useradd exit {proc.returncode}")
+        entry = pwd.getpwnam(name)
+    if entry.pw_uid == 0:
+        raise OSError(f"user {name} is root")
+    return name, entry.pw_uid, entry.pw_gid
+
+
+def _probe(user, base: Path) -> tuple:
+    """Run the sandbox's self-test as ``user``: (why it fails or '', what it does not protect or '')."""
+    workdir = Path(tempfile.mkdtemp(prefix="probe-", dir=base))
+    os.chown(workdir, user[1], user[2])
+    try:
+        proc = subprocess.run([sys.executable, "-B", str(SANDBOX), "--uid", str(user[1]), "--gid", str(user[2]),
+                               "--workdir", str(workdir), "--probe"], capture_output=True, text=True, timeout=60,
+                              cwd=workdir, env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1"))
+    except (OSError, subprocess.TimeoutExpired) as e:
+        return f"the sandbox could not start ({e})", ""
+    finally:
+        kill_user(user[1])
+        shutil.rmtree(workdir, ignore_errors=True)
+    if proc.returncode != 0:
+        return (proc.stderr.strip().splitlines() or ["the sandbox's self-test failed"])[-1][:200], ""
+    return "", "; ".join(proc.stdout.strip().splitlines())
+
+
+def setup(jobs: int, mode: str = "auto") -> Isolation:
+    """Decide how to isolate a batch of ``jobs`` parallel submissions (see the module doc)."""
+    base = Path(tempfile.mkdtemp(prefix="dhlab-grade-kernels-"))
+    os.chmod(base, 0o711)                      # users can enter their own folder, not list the others
+    iso = Isolation("none", jobs=jobs, base=base)
+    if mode == "none":
+        iso.why = "isolation turned off (--isolation none)"
+    elif os.geteuid() != 0:
+        iso.why = ("the grader does not run as root, so every kernel runs as the grader's own user: a submission "
+                   "could read the other submissions and leave processes behind (grade as root or in a container)")
+        if mode == "user":
+            raise OSError(iso.why)
+    else:
+        try:
+            iso.users = [_ensure_user(f"{USER_PREFIX}{k}") for k in range(1, jobs + 1)]
+        except OSError as e:
+            try:
+                iso.users = [("nobody", pwd.getpwnam("nobody").pw_uid, pwd.getpwnam("nobody").pw_gid)]
+                iso.jobs = 1
+                iso.why = f"no user could be created ({e}), so all kernels run as nobody, one at a time"
+            except KeyError:
+                iso.why = f"no unprivileged user could be created ({e})"
+        for user in iso.users:                 # a clean slate: nothing left from an earlier, killed batch
+            kill_user(user[1])
+        if iso.users:
+            fatal, limits = _probe(iso.users[0], base)
+            if fatal:
+                iso.users, iso.jobs = [], jobs
+                iso.why = f"the sandbox does not hold on this machine: {fatal}"
+            else:
+                iso.mode = "user"
+                iso.why = "; ".join(w for w in (iso.why, limits) if w)
+        if mode == "user" and iso.mode != "user":
+            raise OSError(iso.why)
+    for user in iso.users or [None] * iso.jobs:
+        iso.release(user)
+    return iso
+
+
+def kill_user(uid: int, tries: int = 50) -> bool:
+    """Kill every process of ``uid`` (not root): a child becomes that user and sends
+    SIGKILL to every process it may signal (``kill(-1)``), until none is left."""
+    if uid == 0:
+        raise ValueError("never kill root's processes")
+    for _ in range(tries):
+        if not _pids_of(uid):
+            return True
+        pid = os.fork()
+        if pid == 0:                                   # the child: become the user, kill them all
+            try:
+                os.setgroups([])
+                os.setgid(pwd.getpwuid(uid).pw_gid)
+                os.setuid(uid)
+                os.kill(-1, signal.SIGKILL)
+            finally:
+                os._exit(0)
+        os.waitpid(pid, 0)
+        time.sleep(0.02)
+    return not _pids_of(uid)
+
+
+def _pids_of(uid: int) -> list:
+    pids = []
+    for entry in os.scandir("/proc"):
+        if entry.name.isdigit():
+            try:
+                if entry.stat().st_uid == uid:
+                    pids.append(int(entry.name))
+            except OSError:
+                pass
+    return pids
+
+
+def kill_token(token: str) -> None:
+    """Kill the processes whose environment carries ``DHLAB_GRADE_TOKEN=token`` (what can
+    be found of a submission's processes when they run as the grader's own user)."""
+    if not token:
+        return
+    mark = f"DHLAB_GRADE_TOKEN={token}".encode()
+    for _ in range(5):
+        found = False
+        for entry in os.scandir("/proc"):
+            if entry.name.isdigit() and int(entry.name) != os.getpid():
+                try:
+                    if mark in Path(entry.path, "environ").read_bytes():
+                        os.kill(int(entry.name), signal.SIGKILL)
+                        found = True
+                except (OSError, ValueError):
+                    pass
+        if not found:
+            return
+        time.sleep(0.05)

@@ -1,0 +1,378 @@
+"""Part 3 of the assignment: each ``T_i`` judged against the frame the student evidently intended.
+
+A DH frame can be valid and still not be the one the student meant: a wrong sign of
+α1 flips z1, a forgotten +180° in θ1 flips x1, and the frame is as valid as before
+(the DH rules let z and x point either way). Every later ``T_j`` the student wrote
+for the intended frame then fails on the flipped one. Charging all of them would
+make one slip cost five items, and the feedback would point at the wrong rows.
+
+So the checks look for the **cheapest explanation** of the whole chain, the way a
+teacher reads a page of working:
+
+* ``T_i`` is placed on the student's frame i−1 (the one their own ``T_1 … T_{i−1}``
+  build). If it gives a valid frame i that turns joint i the pictured way, it is right.
+* If it fails there but passes on that frame with its z or x (or both) flipped,
+  the student meant the flipped frame: ``T_{i−1}``, the row that made the flip, is
+  charged once, with the parameter that flips it (α_{i−1}, θ_{i−1}'s offset), and
+  the checks carry on from the intended frame.
+* After a row that is wrong anyway (already charged), the next row may be placed on
+  any valid frame i−1: the one the student meant cannot be known, and charging the
+  same row twice would cost nothing more.
+
+Among all such readings, the one that charges the fewest rows wins; among those, the
+one whose charges change the fewest parameters (a wrong sign of α is one parameter; a
+forgotten 180° in θ with the α and a that go with it, two or three; a row wrong in
+itself counts as more than any flip), then the one whose charged rows come first. A
+search over the few frames possible at each step (a small dynamic programme) finds
+it. So one slip costs one item, whatever it leaves valid downstream.
+
+The robot being graded is a parameter (``ref``, a :class:`dhlab.grading.puma.Reference`),
+never hard-wired.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import puma
+from .answers import NOT_ANSWERED, Answers, Row
+
+__all__ = ["Analysis", "analyse", "rows_of", "matrix", "diagnose", "chain_matches", "random_configurations",
+           "FLIPS"]
+
+N_CONFIGS = 50
+MAX_STATES = 24
+FAIL_EDITS = 3            # a row wrong in itself counts as a bigger edit than any flip of its frame
+
+# the three ways a right-handed frame can be turned over and stay on the same axes
+FLIPS = {
+    "z": np.diag([1.0, -1.0, -1.0, 1.0]),      # z (and y) the other way: Rx(180°)
+    "x": np.diag([-1.0, -1.0, 1.0, 1.0]),      # x (and y) the other way: Rz(180°)
+    "xz": np.diag([-1.0, 1.0, -1.0, 1.0]),     # x and z the other way: Ry(180°)
+}
+
+
+@dataclass
+class Item:
+    """One thing checked: ``ok`` True, False, or None (not answered)."""
+    label: str
+    ok: bool | None
+    message: str = ""
+
+
+@dataclass
+class Analysis:
+    rows: list                  # T_1…T_n as read (Row or a marker)
+    items: list                 # one Item per T_i
+    frames: list                # the intended frame k at home (4x4), k = 0…n
+    valid: list                 # whether the student's own T_k built that frame (True) or it was inferred
+    structural_ok: bool         # every T_i is a Row with its own joint's variable in θ
+    ref: object = None
+
+
+def rows_of(answers: Answers, n: int | None = None) -> list:
+    """T_1…T_n: the T_i variable, or the chain's i-th factor when T_i is missing."""
+    rows = []
+    chain = answers.chain if isinstance(answers.chain, list) else []
+    for i, value in enumerate(answers.T[:n] if n else answers.T):
+        if not isinstance(value, Row) and i < len(chain):
+            value = chain[i]
+        rows.append(value)
+    return rows
+
+
+def matrix(row: Row, q: float = 0.0) -> np.ndarray:
+    """T_i at joint value q (radians; q only enters where the row's variable is)."""
+    theta = math.radians(row.theta.const) + (row.theta.sign * q if row.theta.joint is not None else 0.0)
+    d = row.d.const + (row.d.sign * q if row.d.joint is not None else 0.0)
+    return puma.dh_frames([(1, None, theta, d, row.a, math.radians(row.alpha))], np.zeros((1, 1)))[0, 1]
+
+
+# --- one row on one frame ----------------------------------------------------------------------
+
+def _structure(i: int, row: Row) -> list:
+    """What is wrong with T_i whatever the frames: the joint variable's place."""
+    joint, _, where = row.joint
+    if joint is None:
+        return [f"θ{i} has no joint variable: joint {i} turns, so write θ{i} = q{i} + (a constant angle)"]
+    if where == "d":
+        return [f"q{i} is in d{i}, which would make joint {i} slide (prismatic); "
+                f"the robot's joint {i} turns: put q{i} in θ{i}"]
+    if joint != i:
+        return [f"θ{i} uses q{joint}; each T_i carries its own joint's variable, q{i}"]
+    return []
+
+
+def _place(ref, i: int, V, row: Row, A) -> tuple:
+    """T_i placed on frame V: (passes, frame i, the problems found)."""
+    F = V @ A
+    problems = []
+    along = float(V[:3, 2] @ ref.axes[i - 1].direction) > 0
+    if (row.joint[1] > 0) != along:
+        problems.append(_sense_message(i, row, along))
+    _, angle, dist = puma.nearest_valid_frame(ref, i, F)
+    if not (angle <= puma.TOL_DEG and dist <= puma.TOL_POS):
+        problems.append(diagnose(ref, i, V, F, row))
+    return not problems, F, problems
+
+
+# --- the search ------------------------------------------------------------------------------
+
+@dataclass
+class _State:
+    V: np.ndarray               # frame i (home pose) the next row is placed on
+    cost: int                   # rows charged so far
+    charged: tuple              # which rows, in order
+    items: list                 # Item per row so far
+    frames: list
+    own: list                   # whether frame k is the one the student's T_k built
+    edits: int = 0              # how many parameters the charges change (a smaller fix is likelier)
+
+    def key(self):
+        return tuple(np.round(self.V, 4).ravel()), self.charged[-1:] == (len(self.items),)
+
+    def rank(self):
+        return self.cost, self.edits, self.charged
+
+
+def _flip_fixes(i: int, row: Row, how: str) -> list:
+    """The parameters of T_i that change when its frame is turned over ``how``."""
+    theta, alpha, a = row.theta.const, row.alpha, row.a
+    if how == "z":
+        return [f"α{i} = {_angle(alpha + 180)}° instead of {_angle(alpha)}°"]
+    new_alpha = -alpha if how == "x" else 180 - alpha
+    fixes = [f"θ{i}'s offset {_angle(theta + 180)}° instead of {_angle(theta)}°"]
+    if _angle(new_alpha) != _angle(alpha):
+        fixes.append(f"α{i} = {_angle(new_alpha)}°")
+    if abs(a) > 1e-12:
+        fixes.append(f"a{i} = {-a:g}")
+    return fixes
+
+
+def _flip_message(i: int, row: Row, how: str) -> str:
+    """T_i is right up to a flip of its frame, which the rows after it undo: name the parameter."""
+    axis = {"z": f"z{i}", "x": f"x{i}", "xz": f"x{i} and z{i}"}[how]
+    param = f"α{i}" if how == "z" else f"θ{i}'s offset"
+    return (f"{param}: your T{i} builds a valid frame {i}, but your T{i + 1}, T{i + 2}, … are written for "
+            f"frame {i} with {axis} pointing the other way; with {', '.join(_flip_fixes(i, row, how))} they fit "
+            f"(one slip: only T{i} is charged)")
+
+
+def _angle(x: float) -> str:
+    x = (x + 180) % 360 - 180
+    return f"{(180.0 if abs(x + 180) < 1e-9 else x) + 0.0:g}"
+
+
+def analyse(answers: Answers, ref=None) -> Analysis:
+    """Judge every T_i (see the module's doc): the items, and the frames the student meant."""
+    ref = ref or puma.reference()
+    n = ref.n
+    rows = rows_of(answers, n)
+    states = [_State(np.eye(4), 0, (), [], [np.eye(4)], [True])]
+    structural_ok = True
+    for i, row in enumerate(rows, start=1):
+        if not isinstance(row, Row):
+            structural_ok = False
+            item = Item(f"T{i}", None if row is NOT_ANSWERED else False,
+                        "not answered" if row is NOT_ANSWERED else row.why)
+            states = _dedupe([_State(ref.home_frames[i], s.cost + 1, s.charged + (i,), s.items + [item],
+                                     s.frames + [ref.home_frames[i]], s.own + [False]) for s in states])
+            continue
+        structural_ok = structural_ok and not _structure(i, row)
+        A = matrix(row)
+        states = _dedupe([new for s in states for new in _expand(ref, i, rows, A, s)])
+    best = min(states, key=_State.rank)
+    return Analysis(rows, best.items, best.frames, best.own, structural_ok, ref)
+
+
+def _expand(ref, i: int, rows, A, s: _State) -> list:
+    """The states after T_i, from state ``s``: T_i right on the frame as it is, on a
+    flipped frame (charging T_{i−1}), on any valid frame (when T_{i−1} is charged
+    anyway), or T_i wrong."""
+    row = rows[i - 1]
+    label = f"T{i} = {row.text()}"
+    broken = _structure(i, row)
+    out = []
+    passed_free = False
+    if not broken:
+        prev_charged = i - 1 in s.charged
+        candidates = [("", s.V, 0)]
+        if i > 1:                                   # frame 0 is given: it never turns over
+            extra = 0 if prev_charged else 1
+            candidates += [(how, s.V @ g, extra) for how, g in FLIPS.items()]
+            if prev_charged:                        # T_{i-1} is wrong anyway: any valid frame i-1
+                for _, V, _ in list(candidates):
+                    G, _, _ = puma.nearest_valid_frame(ref, i, V @ A)
+                    W = G @ np.linalg.inv(A)
+                    if puma.is_valid_frame(ref, i - 1, W):
+                        candidates.append(("any", W, 0))
+        for how, V, extra in candidates:
+            ok, F, _ = _place(ref, i, V, row, A)
+            if not ok:
+                continue
+            passed_free = passed_free or not extra
+            items, charged, edits = list(s.items), s.charged, s.edits
+            if extra:
+                items[i - 2] = Item(items[i - 2].label, False, _flip_message(i - 1, rows[i - 2], how))
+                charged = charged + (i - 1,)
+                edits += len(_flip_fixes(i - 1, rows[i - 2], how))
+            frames = s.frames[:-1] + [V]                # the frame i-1 the student meant
+            own = s.own[:-1] + [s.own[-1] and not how]
+            out.append(_State(F, s.cost + extra, charged, items + [Item(label, True)], frames + [F], own + [True],
+                              edits))
+    if passed_free:                     # a row that fits is never charged for itself
+        return out
+    # T_i wrong: diagnosed on the frame as it is; carry on from the nearest valid frame i
+    _, F, problems = _place(ref, i, s.V, row, A)
+    if broken:                    # the variable is misplaced: its sense means nothing yet
+        problems = broken + [p for p in problems if not p.startswith(f"joint {i}: a positive")]
+    C, _, _ = puma.nearest_valid_frame(ref, i, F)
+    edits = FAIL_EDITS if broken or not _one_edit_fits(ref, i, s.V, row) else 1
+    out.append(_State(C, s.cost + 1, s.charged + (i,), s.items + [Item(label, False, "; ".join(problems))],
+                      s.frames + [C], s.own + [False], s.edits + edits))
+    return out
+
+
+def _one_edit_fits(ref, i: int, V, row: Row) -> bool:
+    """Whether changing one parameter of T_i the way students slip (a sign, 180°) makes it fit
+    frame V: then "T_i is wrong" is as small an explanation as a flip of the frame before."""
+    theta, d = row.theta, row.d
+    edits = [dataclasses.replace(row, theta=dataclasses.replace(theta, const=theta.const + 180)),
+             dataclasses.replace(row, theta=dataclasses.replace(theta, sign=-theta.sign, const=-theta.const)),
+             dataclasses.replace(row, theta=dataclasses.replace(theta, sign=-theta.sign)),
+             dataclasses.replace(row, alpha=row.alpha + 180), dataclasses.replace(row, alpha=-row.alpha),
+             dataclasses.replace(row, a=-row.a), dataclasses.replace(row, d=dataclasses.replace(d, const=-d.const))]
+    return any(_place(ref, i, V, new, matrix(new))[0] for new in edits)
+
+
+def _dedupe(states) -> list:
+    best = {}
+    for s in states:
+        k = s.key()
+        if k not in best or s.rank() < best[k].rank():
+            best[k] = s
+    kept = sorted(best.values(), key=_State.rank)
+    low = kept[0].cost
+    return [s for s in kept if s.cost <= low + 1][:MAX_STATES]
+
+
+# --- the messages -------------------------------------------------------------------------------
+
+def _sense_message(i: int, row: Row, z_along_arrow: bool) -> str:
+    if z_along_arrow:
+        return (f"joint {i}: a positive q{i} turns the arm the wrong way: your z{i - 1} points along the "
+                f"drawn positive sense of joint {i}, so θ{i} must grow with q{i}; write θ{i} = q{i} + (constant), "
+                f"not {row.theta.text('°')}")
+    return (f"joint {i}: a positive q{i} turns the arm the wrong way: your z{i - 1} points against the "
+            f"drawn positive sense of joint {i}, so θ{i} = {row.theta.text('°')} turns it opposite to the "
+            f"curled arrow; write θ{i} = -q{i} + (constant), or let z{i - 1} point along the arrow")
+
+
+def _line_word(angle: float) -> str:
+    if angle < puma.TOL_DEG:
+        return "parallel to"
+    if abs(angle - 90) < puma.TOL_DEG:
+        return "perpendicular to"
+    return f"at {angle:.1f}° to"
+
+
+def _vec(v, digits: int = 4) -> str:
+    return "(" + ", ".join(f"{x + 0.0:.{digits}f}" for x in np.asarray(v, float)) + ")"
+
+
+def diagnose(ref, i: int, V, F, row: Row) -> str:
+    """Why frame i = (frame i-1)·T_i is not a valid DH frame: the DH quantity at fault."""
+    n = ref.n
+    z_prev, z = V[:3, 2], F[:3, 2]
+    o = F[:3, 3]
+    alpha_hint = ""
+    if abs(row.alpha) <= 2 * math.pi + 1e-9 and row.alpha not in (0, 0.0):
+        alpha_hint = " (α is in degrees; this looks like radians)"
+    if i == n:
+        target = ref.axes[n - 1]
+        if abs(float(z @ target.direction)) < math.cos(math.radians(puma.TOL_DEG)):
+            return (f"z{n} should lie along z{n - 1} (the axis of joint {n}: the last frame's z is aligned "
+                    f"with the previous one, seed 000 paso 0); your α{n} = {row.alpha:g}° turns it{alpha_hint}")
+        miss = float(np.linalg.norm(o - ref.wrist_centre))
+        return (f"end effector: frame {n}'s origin should be at the wrist centre W = {_vec(ref.wrist_centre)} m, "
+                f"where the axes of joints 4, 5 and 6 meet; yours is {miss:.4f} m away, at {_vec(o)}: "
+                f"check d{n} = {row.d.text()} and a{n} = {row.a:g}")
+    L_prev, L_next = ref.axes[i - 1], ref.axes[i]
+    rel = puma.relation(L_prev, L_next)
+    ang_st = math.degrees(math.acos(min(1.0, abs(float(z_prev @ z)))))
+    joint = f"joint {i + 1}"
+    if abs(ang_st - rel.acute) > puma.TOL_DEG:
+        verb = "leaves it parallel" if ang_st < puma.TOL_DEG else "turns it"
+        return (f"{joint}: z{i} should be {_line_word(rel.acute)} z{i - 1}; your α{i} = {row.alpha:g}° "
+                f"{verb}{alpha_hint} (the axis of {joint} is {_line_word(rel.acute)} the axis of joint {i})")
+    if abs(float(z @ L_next.direction)) < math.cos(math.radians(puma.TOL_DEG)):
+        return (f"{joint}: z{i} is {_line_word(rel.acute)} z{i - 1} as it should be, but points the wrong way "
+                f"at the home pose: x{i} must lie along the common normal of z{i - 1} and z{i} "
+                f"(at home, along ±{_vec(rel.normal, 3)}); check the constant in θ{i} "
+                f"(yours: {row.theta.const:g}°) and the sign of α{i}")
+    if abs(abs(row.a) - rel.distance) > puma.TOL_POS:
+        should = (f"should meet z{i - 1} (a{i} = 0)" if rel.kind == "intersect" else
+                  f"should be {rel.distance:.4g} m from z{i - 1} (the length of their common normal, |a{i}|)")
+        return f"{joint}: z{i} {should}; your a{i} = {row.a:g}"
+    if rel.kind in ("parallel", "skew") and float(row.a * F[:3, 0] @ rel.normal) < 0:
+        return (f"{joint}: z{i} is {rel.distance:.4g} m from z{i - 1} as it should be, but on the wrong side "
+                f"at the home pose: x{i} points from z{i - 1} towards z{i}; check the constant in θ{i} "
+                f"(yours: {row.theta.const:g}°) or the sign of a{i}")
+    # right direction and distance: x_i crosses z_{i-1} at the wrong height (d_i)
+    crossing = o - row.a * F[:3, 0]
+    target = rel.foot - (rel.distance * rel.normal if rel.kind == "skew" else 0.0)
+    shift = float((target - crossing) @ z_prev)
+    free = ""
+    if puma.frame_family(ref, i - 1).shift:
+        free = (f" — or d{i - 1}: the origin of frame {i - 1} may slide along z{i - 1} (its axes are parallel), "
+                f"but then d{i} must follow it")
+    return (f"{joint}: x{i} must cross z{i - 1} where the common normal of z{i - 1} and z{i} does; yours "
+            f"crosses it {abs(shift):.4g} m {'short of' if shift > 0 else 'past'} that point (along z{i - 1}): "
+            f"check d{i} (yours: {row.d.text()}){free}")
+
+
+# --- the whole chain, moving -------------------------------------------------------------------
+
+def random_configurations(n: int = N_CONFIGS, seed: int = 560, ref=None) -> np.ndarray:
+    """The configurations the chain is compared at: home, then n random ones (radians)."""
+    ref = ref or puma.reference()
+    rng = np.random.default_rng(seed)
+    Q = rng.uniform(-math.pi, math.pi, (n, ref.n))
+    return np.vstack([np.zeros(ref.n), Q])
+
+
+def _student_rows_numeric(rows) -> list:
+    """(sign, joint index, θ0, d, a, α) in radians for :func:`puma.dh_frames`."""
+    return [(row.theta.sign, row.theta.joint - 1, math.radians(row.theta.const), row.d.const, row.a,
+             math.radians(row.alpha)) for row in rows]
+
+
+def chain_matches(rows, Q=None, ref=None) -> dict:
+    """Compare a chain with the reference robot at configurations ``Q`` (default: home + 50 random).
+
+    For each joint, whether its axis — a directed line: the axis of joint i is z_{i-1},
+    pointing the way that a positive q_i turns by the right-hand rule — is the robot's
+    at every configuration; whether the end effector is at the same place; and whether
+    the last frame's z lies along the last joint's axis.
+    """
+    ref = ref or puma.reference()
+    Q = random_configurations(ref=ref) if Q is None else np.atleast_2d(Q)
+    F = puma.dh_frames(_student_rows_numeric(rows), Q)
+    R = ref.frames(Q)
+    cos_tol = math.cos(math.radians(puma.TOL_DEG))
+    axes_ok = []
+    for k, row in enumerate(rows):
+        d_st = row.theta.sign * F[:, k, :3, 2]
+        p_st = F[:, k, :3, 3]
+        d_ref, p_ref = R[:, k, :3, 2], R[:, k, :3, 3]
+        same_dir = np.einsum("ij,ij->i", d_st, d_ref) >= cos_tol
+        v = p_ref - p_st
+        off = np.linalg.norm(v - np.einsum("ij,ij->i", v, d_st)[:, None] * d_st, axis=1)
+        axes_ok.append(bool(np.all(same_dir & (off <= puma.TOL_POS))))
+    ee = np.linalg.norm(F[:, -1, :3, 3] - R[:, -1, :3, 3], axis=1)
+    last_z = np.abs(np.einsum("ij,ij->i", F[:, -1, :3, 2], R[:, -1, :3, 2])) >= cos_tol
+    return {"axes": axes_ok, "end_effector": bool(np.all(ee <= puma.TOL_POS)), "last_z": bool(np.all(last_z)),
+            "configurations": len(Q), "frames": F}

@@ -1,0 +1,83 @@
+"""Every submission is copied, without its outputs, before any of them runs.
+
+The grader reads each submitted file once, at the start of a batch, and keeps a
+private copy (a folder only the grader's user can enter) holding only the code of
+its code cells, numbered as in Jupyter. So:
+
+* what a notebook printed or drew is not the submission: a correct notebook with
+  50 MB of saved outputs is graded like any other (the *code* is limited, with
+  :data:`dhlab.grading.runner.MAX_CODE_BYTES`);
+* a submission that edits a classmate's file, or its own, while the batch runs
+  changes nothing: the copies were made before anything ran;
+* the gradebook records each file's SHA-256, so ``--resume`` regrades a file that
+  changed since its row was written.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from .runner import MAX_NOTEBOOK_BYTES, NotebookError, read_code_cells
+
+__all__ = ["Staged", "stage", "stage_all", "find_submissions"]
+
+
+@dataclass
+class Staged:
+    """One submission, as the grader keeps it."""
+    submission: str          # its path under the submissions folder, without .ipynb ('alice/ps8/puma')
+    file: str                # the same, with the file's own name ('alice/ps8/puma.ipynb')
+    sha256: str              # of the file as handed in
+    copy: Path | None        # the code-only copy, None when the file cannot be run
+    error: str = ""          # why it cannot be run
+
+
+def find_submissions(folder: Path) -> list:
+    """Every notebook under ``folder``, skipping checkpoints, hidden folders and links."""
+    out = []
+    for path in sorted(Path(folder).rglob("*.ipynb")):
+        parts = path.relative_to(folder).parts
+        if any(p.startswith(".") for p in parts) or path.is_symlink() or not path.is_file():
+            continue
+        out.append(path)
+    return out
+
+
+def stage(path: Path, folder: Path, into: Path, index: int) -> Staged:
+    """Read ``path`` once; write its code-only copy into ``into``."""
+    rel = path.relative_to(folder)
+    submission, file = rel.with_suffix("").as_posix(), rel.as_posix()
+    try:
+        size = path.stat().st_size
+        if size > MAX_NOTEBOOK_BYTES:
+            raise NotebookError(f"the file is {size / 1e6:.0f} MB, more than {MAX_NOTEBOOK_BYTES / 1e6:.0f} MB")
+        raw = path.read_bytes()
+    except OSError as e:
+        return Staged(submission, file, "", None, f"cannot read the file ({e.strerror or e})")
+    except NotebookError as e:
+        return Staged(submission, file, "", None, str(e))
+    digest = hashlib.sha256(raw).hexdigest()
+    try:
+        cells = read_code_cells(raw=raw)
+    except NotebookError as e:
+        return Staged(submission, file, digest, None, str(e))
+    numbered = dict(cells)
+    last = max(numbered, default=0)
+    nb = {"nbformat": 4, "nbformat_minor": 5, "metadata": {},
+          "cells": [{"cell_type": "code", "metadata": {}, "source": numbered[k], "outputs": [],
+                     "execution_count": None} if k in numbered else
+                    {"cell_type": "markdown", "metadata": {}, "source": ""} for k in range(1, last + 1)]}
+    copy = into / f"{index:05d}.ipynb"
+    copy.write_text(json.dumps(nb), encoding="utf-8")
+    return Staged(submission, file, digest, copy)
+
+
+def stage_all(folder: Path, paths) -> tuple:
+    """(the private folder, [Staged]) for every path, all copied before anything runs."""
+    into = Path(tempfile.mkdtemp(prefix="dhlab-grade-copies-"))
+    os.chmod(into, 0o700)
+    return into, [stage(p, Path(folder), into, k) for k, p in enumerate(paths)]

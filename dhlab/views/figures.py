@@ -1,0 +1,196 @@
+"""Figures that are pictures: readable, never clipped, shown as an image everywhere.
+
+Every figure of the course is made by :func:`new_figure`. It is a matplotlib
+``Figure`` made **without pyplot** (re-running a cell does not pile up figures,
+``plt.show()`` never shows it twice), and it:
+
+* **displays as a PNG picture** in Jupyter on a first Run All in a fresh
+  kernel, with the inline backend and with ``%matplotlib widget``, even when
+  pyplot was never imported (a bare Agg figure would show only the text
+  ``<Figure size 1200x620 with 2 Axes>``): it has a ``_repr_mimebundle_``
+  that IPython asks before any other formatter;
+* is **readable**: at least :data:`MIN_DPI` dots per inch, at least
+  :data:`MIN_WIDTH_PX` pixels wide (a smaller ``figsize`` is scaled up, its
+  shape kept) and no text smaller than :data:`MIN_TEXT_PX` pixels (smaller
+  fonts are raised when the figure is drawn);
+* is **never clipped** when shown: the picture is the figure, widened where a
+  title, a label or a marker sticks out of it;
+* honours the **projector** setting: ``projector()`` makes every figure and
+  panel made afterwards larger (more pixels per inch: text, lines and markers
+  grow together, the layout stays the same), without editing the notebooks.
+
+>>> fig = new_figure((3.2, 3.2))          # too small for a lecture: scaled up
+>>> fig.dpi, fig.get_size_inches().round(2).tolist()
+(100.0, [4.5, 4.5])
+>>> ax = fig.add_subplot()
+>>> _ = ax.plot([0, 1], [0, 1])
+>>> fig._repr_png_()[:8] == b"\\x89PNG\\r\\n\\x1a\\n"
+True
+"""
+from __future__ import annotations
+
+import base64
+import io
+import math
+import numbers
+
+import matplotlib
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+from matplotlib.text import Text
+from matplotlib.transforms import Bbox
+
+from ..validation import DHLabError
+
+__all__ = ["new_figure", "CourseFigure", "projector", "projector_scale", "figure_size",
+           "MIN_DPI", "MIN_WIDTH_PX", "MIN_TEXT_PX", "min_fontsize"]
+
+MIN_DPI = 100             # dots per inch, before the projector scale
+MIN_WIDTH_PX = 450        # pixels, before the projector scale
+MIN_TEXT_PX = 12          # the smallest text, in pixels (12 px = 8.64 pt at 100 dpi)
+
+_projector = {"scale": 1.0}
+
+
+def projector(on: bool = True, scale: float = 1.5) -> float:
+    """Make every figure and panel made from now on ``scale`` times larger (a
+    lecture hall), or back to normal with ``projector(False)``. Returns the scale
+    now in force.
+
+    Only figures made afterwards change: run it at the top of a notebook (or
+    in a startup file) and re-run the cells.
+
+    >>> projector(scale=1.5)
+    1.5
+    >>> projector(False)
+    1.0
+    """
+    if not isinstance(on, (bool, int)) or isinstance(on, float):
+        raise DHLabError(f"projector(on) takes True or False, got {on!r}.")
+    if on:
+        scale = _positive(scale, "scale", hint="e.g. projector(scale=1.5)")
+        if not 0.5 <= scale <= 4:
+            raise DHLabError(f"projector scale must be between 0.5 and 4, got {scale:g}; "
+                             "1.5 suits most lecture halls.")
+        _projector["scale"] = scale
+    else:
+        _projector["scale"] = 1.0
+    return _projector["scale"]
+
+
+def projector_scale() -> float:
+    """The current projector scale (1.0: normal)."""
+    return _projector["scale"]
+
+
+def min_fontsize(dpi: float) -> float:
+    """The smallest font size (points) that is :data:`MIN_TEXT_PX` pixels at ``dpi``."""
+    return MIN_TEXT_PX * 72.0 / dpi
+
+
+def _positive(value, name, hint=""):
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise DHLabError(f"{name} must be a positive number, got {value!r}" + (f" ({hint})." if hint else "."))
+    value = float(value)
+    if not math.isfinite(value) or value <= 0:
+        raise DHLabError(f"{name} must be a positive, finite number, got {value!r}"
+                         + (f" ({hint})." if hint else "."))
+    return value
+
+
+def figure_size(figsize=None, dpi=None) -> tuple:
+    """``((width, height) in inches, dpi)`` for a course figure: the projector
+    scale applied to the dpi, then at least :data:`MIN_DPI` dpi and
+    :data:`MIN_WIDTH_PX` px wide (scaled up with its shape kept). ``None``:
+    matplotlib's default size and dpi.
+
+    >>> figure_size((3.6, 3.6), dpi=80)
+    ((4.5, 4.5), 100.0)
+    """
+    if figsize is None:
+        figsize = matplotlib.rcParams["figure.figsize"]
+    if isinstance(figsize, (str, bytes)) or not hasattr(figsize, "__len__") or len(figsize) != 2:
+        raise DHLabError(f"figsize must be (width, height) in inches, e.g. (6, 4), got {figsize!r}.")
+    width, height = (_positive(v, "figsize", hint="(width, height) in inches, e.g. (6, 4)")
+                     for v in figsize)
+    if max(width, height) > 40:
+        raise DHLabError(f"figsize {figsize!r} is larger than 40 inches; give it in inches, e.g. (6, 4).")
+    base = MIN_DPI if dpi is None else _positive(dpi, "dpi", hint="dots per inch, e.g. 100")
+    base = max(base, MIN_DPI)
+    if width * base < MIN_WIDTH_PX:                       # too narrow: scale up, keep the shape
+        grow = MIN_WIDTH_PX / (width * base)
+        width, height = width * grow, height * grow
+    return (round(width, 4), round(height, 4)), base * projector_scale()
+
+
+class CourseFigure(Figure):
+    """A matplotlib Figure that shows itself as a PNG and keeps its text readable.
+
+    Made by :func:`new_figure`; see the module's description.
+    """
+
+    def draw(self, renderer):
+        enforce_min_text(self)
+        super().draw(renderer)
+
+    def png(self) -> bytes:
+        """The whole figure as PNG bytes, widened where something sticks out."""
+        if self.canvas is None or not hasattr(self.canvas, "print_png"):
+            FigureCanvasAgg(self)
+        renderer = self.canvas.get_renderer() if hasattr(self.canvas, "get_renderer") else None
+        bbox = "tight"
+        if renderer is not None:
+            enforce_min_text(self)
+            tight = self.get_tightbbox(renderer)
+            if tight is not None:                 # never crop, only widen: the minimum size holds
+                bbox = Bbox.union([self.bbox_inches, tight.padded(0.05)])
+        buffer = io.BytesIO()
+        self.savefig(buffer, format="png", dpi=self.dpi, bbox_inches=bbox,
+                     facecolor=self.get_facecolor())
+        return buffer.getvalue()
+
+    def _repr_png_(self):
+        return self.png() if self.axes else None
+
+    def _repr_mimebundle_(self, include=None, exclude=None):
+        # IPython asks this before its own Figure formatter (which exists only
+        # once pyplot was imported): the same picture with any backend.
+        if not self.axes:
+            return None
+        return {"image/png": base64.b64encode(self.png()).decode("ascii")}
+
+
+def enforce_min_text(figure) -> None:
+    """Raise every text of ``figure`` smaller than :data:`MIN_TEXT_PX` pixels to that
+    size (tick labels included, also those made later)."""
+    smallest = min_fontsize(figure.dpi)
+    for ax in figure.axes:
+        for axis in getattr(ax, "_axis_map", {}).values():
+            ticks = axis.get_major_ticks(1) if not axis.majorTicks else axis.majorTicks
+            if ticks and ticks[0].label1.get_fontsize() < smallest - 1e-9:
+                axis.set_tick_params(which="both", labelsize=smallest)
+    for text in figure.findobj(Text):
+        if text.get_fontsize() < smallest - 1e-9:
+            text.set_fontsize(smallest)
+
+
+def new_figure(figsize=None, **kwargs) -> CourseFigure:
+    """A course figure (see the module): ``figsize`` in inches (default
+    matplotlib's), any other ``matplotlib.figure.Figure`` option (``dpi``,
+    ``layout``, ...). Its layout is ``"constrained"`` unless you give another.
+
+    Draw into it as into any figure (``fig.add_subplot()``, ``fig.subplots(1, 2)``);
+    the last line of a cell that is the figure shows it.
+
+    >>> fig = new_figure((8, 4))
+    >>> ax1, ax2 = fig.subplots(1, 2)
+    """
+    kwargs.pop("FigureClass", None)
+    (width, height), dpi = figure_size(figsize, kwargs.pop("dpi", None))
+    kwargs.setdefault("layout", "constrained")
+    try:
+        figure = CourseFigure(figsize=(width, height), dpi=dpi, **kwargs)
+    except (TypeError, ValueError) as exc:
+        raise DHLabError(f"new_figure: {exc} (options are those of matplotlib.figure.Figure).") from None
+    FigureCanvasAgg(figure)
+    return figure
