@@ -170,6 +170,10 @@ class Robot:
         self.unit = as_text(unit, "unit")
         self.params = _numeric_params(params)
         self.q_symbols = _joint_symbols(joint_symbols, self.n)
+        clash = sorted(set(self.params) & {s.name for s in self.q_symbols})
+        if clash:
+            raise DHLabError(f"{clash[0]} is both a joint variable and a parameter with a fixed value "
+                             f"(params={{{clash[0]!r}: ...}}): rename the parameter or the joint.")
         self._numeric = self._numeric_factors()
         self._base = self._fixed_transform(base, "base")
         self._tool = self._fixed_transform(tool, "tool")

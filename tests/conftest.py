@@ -24,6 +24,7 @@ import tempfile
 
 import pytest
 from jupyter_client.manager import KernelManager
+from jupyter_client.utils import run_sync
 
 from seeddata import load_cases
 
@@ -42,6 +43,8 @@ class PrivateSocketKernelManager(KernelManager):
         await super()._async_cleanup_resources(restart=restart)       # (shutdown_kernel calls this one)
         if not restart:
             shutil.rmtree(self._socket_folder, ignore_errors=True)
+
+    cleanup_resources = run_sync(_async_cleanup_resources)
 
 
 def _private_sockets_for_nbval():

@@ -24,7 +24,7 @@ from dhlab import DHLabError, deg, rad, robots
 from dhlab.chain import Link, Move, Robot, Rot
 from dhlab.transforms import Rx, Ry, Rz, Tx, Tz, dh_matrix, inv, is_rigid, rpy, trans
 
-FAST = settings(max_examples=40, deadline=None, suppress_health_check=list(HealthCheck), database=None)
+FAST = settings(max_examples=30, deadline=None, suppress_health_check=list(HealthCheck), database=None)
 
 # --- the junk ------------------------------------------------------------------------------
 finite = st.floats(-10, 10, allow_nan=False)

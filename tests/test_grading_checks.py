@@ -657,3 +657,18 @@ def test_any_answer_gets_feedback_never_an_exception():
                 feedback = A.check_part(part, ns)
                 assert isinstance(feedback.text(), str)
     assert "drop the trailing 1" in A.check_part(2, {"link_points": {0: [[0, 0, -0.67183, 1]]}}).text()
+
+
+def test_the_source_notebooks_stored_feedback_is_what_the_checks_say_now():
+    """The source lives outside notebooks/ (nbval does not re-run it): its stored outputs of
+    the three check cells must still be what the checks print (`make notebooks` refreshes them)."""
+    nb = json.loads(SOURCE.read_text(encoding="utf-8"))
+    ns = _solution_namespace()
+    for cell in nb["cells"]:
+        gid = cell["metadata"].get("nbgrader", {}).get("grade_id", "")
+        if gid.endswith("_check"):
+            part = int(gid[4])
+            stored = "".join(cell["outputs"][0]["data"]["text/plain"])
+            assert stored == A.check_part(part, ns).text()
+    figures = [c for c in nb["cells"] if "_figure(" in "".join(c["source"])]
+    assert len(figures) == 2 and all("image/png" in c["outputs"][0]["data"] for c in figures)

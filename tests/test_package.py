@@ -14,3 +14,22 @@ def test_panel_functions_are_not_shadowed_by_their_modules():
 def test_everything_in_all_exists():
     missing = [name for name in dhlab.__all__ if not hasattr(dhlab, name)]
     assert not missing
+
+
+def test_notebook_kernels_use_private_unix_sockets():
+    """The fix of the flaky "Kernel didn't respond in 60 seconds" (see tests/conftest.py): nbval's
+    kernels listen on Unix sockets in a folder of their own, so no TCP port is picked at all."""
+    import os
+
+    import nbval.kernel
+    from conftest import PrivateSocketKernelManager
+
+    assert nbval.kernel.KernelManager is PrivateSocketKernelManager
+    a, b = PrivateSocketKernelManager(), PrivateSocketKernelManager()
+    try:
+        assert a.transport == b.transport == "ipc"
+        assert a.ip != b.ip and os.path.isdir(os.path.dirname(a.ip))
+    finally:
+        for km in (a, b):
+            km.cleanup_resources()
+    assert not os.path.exists(os.path.dirname(a.ip))

@@ -7,6 +7,7 @@ import pytest
 import sympy as sp
 
 from dhlab import robots, symbolic
+from dhlab.symbolic import exact
 from dhlab.transforms import dh_matrix
 
 from seeddata import DATA
@@ -103,3 +104,14 @@ def test_seed004_robot1_compact():
     l1, l2 = sp.symbols("l1 l2")
     assert sp.expand(T[0, 3] - (l2 * C01 - l1 * S0)) == 0
     assert sp.expand(T[1, 3] - (l2 * S01 + l1 * C0)) == 0
+
+
+@pytest.mark.parametrize("name", sorted(robots.catalogue()))
+def test_fk_sym_is_the_plain_matrix_product(name):
+    """fk_sym() multiplies entry by entry (fast on long chains): the very matrix sympy's product gives."""
+    robot = robots.catalogue()[name]()
+    mats = [exact(sp.Matrix(robot.base))] + robot.link_matrices_sym() + [exact(sp.Matrix(robot.tool))]
+    product = mats[0]
+    for A in mats[1:]:
+        product = product * A
+    assert robot.fk_sym() == product

@@ -111,3 +111,87 @@ def test_ik_unreachable_is_a_message_not_a_crash():
     assert sols == [] and "no solution" in sols.message and "0.6 > l2 = 0.5" in sols.message
     with pytest.raises(DHLabError, match="finite"):
         dhlab.ik.pr_mechanism_ik(robots.pr_mechanism(), np.nan, 0.1)
+
+
+# --- issue 14: the reproducers, one by one --------------------------------------------------------
+ISSUE_14_REFUSED = {
+    "Move with a text amount": lambda: dhlab.Move("x", "l1"),
+    "Move with None": lambda: dhlab.Move("x", None),
+    "Move with a list": lambda: dhlab.Move("x", [1]),
+    "Move with a dict": lambda: dhlab.Move("x", {}),
+    "Move with a complex": lambda: dhlab.Move("x", 1j),
+    "Move with nan": lambda: dhlab.Move("x", np.nan),
+    "Rot of 90 (degrees as radians)": lambda: dhlab.Rot("x", 90),
+    "qlim=(1,)": lambda: dhlab.Link([dhlab.Rot("z", joint=True)], qlim=(1,)),
+    "qlim='ab'": lambda: dhlab.Link([dhlab.Rot("z", joint=True)], qlim="ab"),
+    "qlim=5": lambda: dhlab.Link([dhlab.Rot("z", joint=True)], qlim=5),
+    "reversed qlim": lambda: dhlab.RevoluteDH(qlim=(1, -1)),
+    "infinite qlim": lambda: dhlab.RevoluteDH(qlim=(-1, np.inf)),
+    "qlim of 100 rad": lambda: dhlab.RevoluteDH(qlim=(-100, 100)),
+    "deg() limit on a prismatic joint": lambda: dhlab.PrismaticDH(qlim=(0, deg(30))),
+    "table with None": lambda: dhlab.DHRobot.from_table([("q1", None, 0, 0)]),
+    "table with True": lambda: dhlab.DHRobot.from_table([("q1", True, 0, 0)]),
+    "table with 1/0": lambda: dhlab.DHRobot.from_table([("q1", "1/0", 0, 0)]),
+    "table with 1e400": lambda: dhlab.DHRobot.from_table([("q1", "1e400", 0, 0)]),
+    "qlim=[]": lambda: dhlab.DHRobot.from_table([("q1", 0, 1, 0)], qlim=[]),
+    "table of None": lambda: dhlab.DHRobot.from_table(None),
+    "angles='rad' with 90": lambda: dhlab.DHRobot.from_table([("q1", 0, 1, 90)], angles="rad"),
+    "deg(90) in a degree table": lambda: dhlab.DHRobot.from_table([("q1", 0, 1, deg(90))]),
+    "q1 in two rows": lambda: dhlab.DHRobot.from_table([("q1", 0, 1, 0), ("q1", 0, 1, 0)]),
+    "DHRobot(None)": lambda: dhlab.DHRobot(None),
+    "params='abc'": lambda: dhlab.DHRobot([dhlab.RevoluteDH()], params="abc"),
+    "joint_symbols=5": lambda: dhlab.DHRobot([dhlab.RevoluteDH()], joint_symbols=5),
+    "same joint symbol twice": lambda: dhlab.DHRobot([dhlab.RevoluteDH()] * 2, joint_symbols=["q", "q"]),
+    "symbolic base": lambda: dhlab.DHRobot([dhlab.RevoluteDH()], base=sp.eye(4) * sp.Symbol("x")),
+    "deg(None)": lambda: deg(None),
+    "deg('abc')": lambda: deg("abc"),
+    "ragged deg": lambda: deg([[1, 2], [3]]),
+    "ragged rad": lambda: dhlab.rad([[1, 2], [3]]),
+    "compact of None": lambda: dhlab.compact(None, ["q1"]),
+    "compact with unknown names": lambda: dhlab.compact(robots.puma560().fk_sym(), ["x"]),
+    "DHTable(None)": lambda: dhlab.DHTable(None),
+    "inv(sp.eye(3))": lambda: inv(sp.eye(3)),
+    "inv of a non-rigid sympy matrix": lambda: inv(sp.diag(2, 1, 1, 1)),
+    "inv of a 5x5": lambda: inv(sp.eye(5)),
+    "is_rigid(T, tol=None)": lambda: dhlab.is_rigid(np.eye(4), tol=None),
+    "A('1')": lambda: robots.puma560().A("1"),
+    "A(1.5)": lambda: robots.puma560().A(1.5),
+    "IK with None": lambda: dhlab.ik.pr_mechanism_ik(robots.pr_mechanism(), None, 0.1),
+    "IK with text": lambda: dhlab.ik.pr_mechanism_ik(robots.pr_mechanism(), "1", 0.1),
+    "IK with a symbol": lambda: dhlab.ik.pr_mechanism_ik(robots.pr_mechanism(), sp.Symbol("x"), 0.1),
+    "IK with tol=None": lambda: dhlab.ik.pr_mechanism_ik(robots.pr_mechanism(), 1, 0.1, tol=None),
+    "IK with a negative tol": lambda: dhlab.ik.pr_mechanism_ik(robots.pr_mechanism(), 1, 0.1, tol=-1),
+    "IK with a nan tol": lambda: dhlab.ik.pr_mechanism_ik(robots.pr_mechanism(), 1, 0.1, tol=np.nan),
+    "IK of another robot": lambda: dhlab.ik.pr_mechanism_ik(robots.puma560(), 1, 0.1),
+    "joint_axes(None)": lambda: dhlab.joint_axes(None),
+    "Rz(sp.Integer(500))": lambda: Rz(sp.Integer(500)),
+    "alpha=sp.Float(90)": lambda: dhlab.RevoluteDH(alpha=sp.Float(90)),
+    "d=sp.nan": lambda: dhlab.RevoluteDH(d=sp.nan),
+    "complex array": lambda: robots.puma560().fk(np.zeros(6, dtype=complex)),
+    "datetime array": lambda: robots.puma560().fk(np.zeros(6, dtype="datetime64[s]")),
+    "masked values": lambda: robots.puma560().fk(np.ma.array(np.zeros(6), mask=[0, 0, 1, 0, 0, 0])),
+    "text in trans": lambda: trans(sp.Symbol("x"), "y", 0),
+    "deg() inside a numpy array, prismatic": lambda: robots.seed002_4dof().fk(np.array([deg(10), deg(30), 0.2, 0])),
+    "negated deg(), prismatic": lambda: robots.seed002_4dof().fk([deg(10), -deg(30), 0.2, 0]),
+    "deg() in a nested batch, prismatic": lambda: robots.seed002_4dof().fk([[0, 0.1, 0.2, 0], [0, deg(3), 0, 0]]),
+    "fk_sym timeout of -1": lambda: robots.puma560().fk_sym(timeout=-1),
+}
+
+
+@pytest.mark.parametrize("case", sorted(ISSUE_14_REFUSED))
+def test_issue_14_reproducers_are_refused_clearly(case):
+    with pytest.raises(DHLabError) as error:
+        ISSUE_14_REFUSED[case]()
+    assert len(str(error.value)) > 20
+
+
+def test_issue_14_what_is_right_still_works():
+    puma = robots.puma560()
+    assert puma.fk(np.zeros((0, 6))).shape == (0, 4, 4)                 # an empty batch: no poses
+    assert deg(sp.Symbol("x")) == sp.Symbol("x") * sp.pi / 180          # symbolic degrees stay exact
+    assert isinstance(-deg(30), type(deg(30))) and repr(-deg(30)) == "deg(-30)"
+    assert dhlab.compact(puma.fk_sym(simplify=True), ["q1", "q2", "q3"]).has(sp.Symbol("C1"))
+    assert Rz(sp.pi / 2)[0, 1] == -1                                      # sympy numbers stay exact
+    np.testing.assert_allclose(puma.A(2, np.array([0.3])), puma.A(2, 0.3))
+    sols = dhlab.ik.pr_mechanism_ik({"l1": 1.0, "l2": 0.5}, 2.0, 0.25, tol=0)
+    assert len(sols) == 2

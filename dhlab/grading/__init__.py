@@ -3,10 +3,17 @@
 * :mod:`dhlab.grading.puma` — the reference robot and the valid DH frames;
 * :mod:`dhlab.grading.answers` — what a submission's answers are, as plain data;
 * :mod:`dhlab.grading.checks` — the fair checks and their feedback;
+* :mod:`dhlab.grading.part3` — each transformation judged against the frame the student meant
+  (one slip, one item);
+* :mod:`dhlab.grading.staging` — every submission copied, code only, before any runs;
 * :mod:`dhlab.grading.runner` / :mod:`dhlab.grading.sandbox` — running one notebook
-  in a fresh kernel with time, memory and output limits;
-* :mod:`dhlab.grading.gradebook` — the CSV and feedback files;
-* :mod:`dhlab.grading.generate` — the student notebook from the source notebook.
+  in a fresh kernel with time, memory, output and process limits, as an unprivileged
+  user in its own mount namespace when the grader is root;
+* :mod:`dhlab.grading.isolation` — the kernels' users, ending every process a submission
+  started, and the check that the installed dhlab is unchanged;
+* :mod:`dhlab.grading.gradebook` — the CSV (rewritten after every submission) and feedback files;
+* :mod:`dhlab.grading.generate` — the student notebook from the source notebook
+  (package data: ``dhlab/grading/data/08_puma_assignment.ipynb``).
 
 The command line is :mod:`dhlab.grading.cli` (``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv``).
 """

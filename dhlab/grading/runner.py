@@ -60,7 +60,7 @@ __all__ = ["RunResult", "run_notebook", "read_code_cells", "scan_for_tampering",
 # The grader starts this file, and the kernel's launcher, as scripts (python .../runner.py),
 # not with -m: so these processes do not import the whole dhlab package (numpy, sympy, ...).
 # That saves half a second per submission, and the only dhlab files they read from disk are
-# the three of this folder (answers.py, runner.py, sandbox.py), which the grader fingerprints.
+# the three of this folder (answers.py, runner.py, sandbox.py); the grader checks the whole package unchanged.
 RUNNER = Path(__file__).resolve()
 SANDBOX = RUNNER.with_name("sandbox.py")
 MAX_NOTEBOOK_BYTES = 500_000_000      # a file this big is not read at all

@@ -212,7 +212,7 @@ def _sensible(v: Variant) -> bool:
     return bool(z.max() <= plate - CLEARANCE and above_floor)
 
 
-@functools.lru_cache(maxsize=64)
+@functools.lru_cache(maxsize=512)
 def robot_of_variant(v: Variant) -> AssignmentRobot:
     """The assignment robot of variant ``v`` (its axes, points, reference solution), named
     with a short tag of its geometry. Cached: treat it as read-only."""

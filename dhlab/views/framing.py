@@ -20,7 +20,7 @@ wide on a projector (the PUMA used 11 % of its axes). Instead, the view is
 >>> import numpy as np
 >>> lo, hi = frame_box(np.array([[0, 0, 0], [1, 0, 0]]), pad=0.1)
 >>> lo.round(2).tolist(), hi.round(2).tolist()
-([-0.15, -0.29, -0.29], [1.15, 0.29, 0.29])
+([-0.15, -0.23, -0.23], [1.15, 0.23, 0.23])
 """
 from __future__ import annotations
 
@@ -33,7 +33,7 @@ __all__ = ["frame_box", "projected", "extent_fraction", "fit_zoom", "needs_refra
            "center_on",
            "REFRAME_BELOW", "TARGET", "MIN_SIDE", "SLACK"]
 
-REFRAME_BELOW = 0.45      # re-frame when the robot spans less of its axes than this
+REFRAME_BELOW = 0.42      # re-frame when the robot spans less of its axes than this
 MIN_SIDE = 0.3            # no side of the box shorter than this fraction of the longest
 SLACK = 0.04              # extra room on each side, as a fraction of the longest side
 BOX_FILL = 0.98           # how much of the axes the zoomed 3D box fills

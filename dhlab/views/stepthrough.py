@@ -29,8 +29,8 @@ from .camera import set_camera
 from .livefigure import LiveFigure
 from .panel import Panel
 from .teach import matrix_html
-from .view import (AXIS_COLORS, FrameLabels3D, checked_robot, keep_texts_inside, line_in_box, one_pose,
-                   space_ticks, triad_segments)
+from .layout import keep_texts_inside, space_ticks
+from .view import AXIS_COLORS, FrameLabels3D, checked_robot, line_in_box, one_pose, triad_segments
 
 __all__ = ["dh_partial", "dh_params", "motion_text", "stepthrough", "stepthrough_link",
            "StepThroughPanel", "MOTIONS"]
@@ -131,10 +131,18 @@ class StepThroughPanel(Panel):
                                           layout=widgets.Layout(width="360px"))
         self.text = widgets.HTML(layout=widgets.Layout(max_width="480px"))
         self.matrix = widgets.HTML()
+        self.camera = widgets.ToggleButtons(options=["iso", "front", "side", "top"], value="iso",
+                                            description="view",
+                                            style={"description_width": "3em", "button_width": "4.2em"})
+        self.zoom = widgets.FloatSlider(value=1.0, min=0.5, max=3.0, step=0.05, description="zoom",
+                                        readout_format=".2f", continuous_update=False,
+                                        style={"description_width": "3em"},
+                                        layout=widgets.Layout(width="330px"))
         super().__init__(live, [widgets.HTML(self._table_html()), self.slider, self.text,
-                                self.matrix])
+                                self.matrix, self.camera, self.zoom])
         self._refresh()
         self.observe_values([self.slider], self._refresh)
+        self.observe_values([self.camera, self.zoom], self._look)
 
     # --- figure ----------------------------------------------------------------------
     def _build_figure(self, live):
@@ -182,6 +190,13 @@ class StepThroughPanel(Panel):
         self.live.refresh()
         self.text.value = motion_text(step, *self.params, unit=self.unit)
         self.matrix.value = matrix_html(dh_partial(*self.params, step), self._product(step))
+
+    def _look(self):
+        """The camera preset or the zoom changed: redraw everything (the background)."""
+        set_camera(self.ax, self.camera.value, frames=np.array([self.base, self.base @ dh_partial(*self.params, 4)]))
+        self.ax.set_box_aspect((1, 1, 1), zoom=float(self.zoom.value))
+        space_ticks(self.ax)
+        self.live.redraw()
 
     def frame_at(self, step: float) -> np.ndarray:
         """The frame after ``step`` (0…4) of the four motions, in the figure's

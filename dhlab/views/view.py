@@ -28,15 +28,15 @@ axes (:mod:`~dhlab.views.livefigure`) is redrawn only when the frame changes.
 from __future__ import annotations
 
 import numpy as np
-from matplotlib.ticker import MaxNLocator
 
 from ..validation import DHLabError, as_choice, as_flag, as_number, check_joint_values
 from . import framing
 from .camera import set_camera
 from .labels import FrameLabels, FrameLabels3D
+from .layout import keep_texts_inside, space_ticks
 from .livefigure import LiveFigure
 
-__all__ = ["RobotView", "RobotView3D", "RobotView2D", "robot_view", "triad_segments", "keep_texts_inside",
+__all__ = ["RobotView", "RobotView3D", "RobotView2D", "robot_view", "triad_segments",
            "FrameLabels", "FrameLabels3D", "AXIS_COLORS", "default_q", "workspace_box",
            "checked_robot", "one_pose", "line_in_box"]
 
@@ -304,9 +304,9 @@ class RobotView:
     def _strokes(self, frames) -> np.ndarray:
         """Points along the links and the triads, for the labels to keep off."""
         origins = frames[:, :3, 3]
-        t = np.linspace(0, 1, 6)[1:-1, None]
+        t = np.array([0.25, 0.5, 0.75])[:, None]
         along_links = [a + t * (b - a) for a, b in zip(origins[:-1], origins[1:])]
-        s = np.array([0.35, 0.7, 1.0])[:, None]
+        s = np.array([0.5, 1.0])[:, None]
         along_axes = [frame[:3, 3] + s * self.triad_length * frame[:3, k]
                       for frame in frames for k in range(3)] if self.show_triads else []
         return np.vstack(along_links + along_axes) if along_links or along_axes else np.zeros((0, 3))
@@ -406,83 +406,6 @@ class RobotView3D(RobotView):
         if self._joint_axes_on:
             lo, hi = (np.array(lim) for lim in zip(self.ax.get_xlim(), self.ax.get_ylim(), self.ax.get_zlim()))
             self.joint_axes_line.set_data_3d(*self._joint_axis_points(lo, hi).T)
-
-
-def space_ticks(ax, per_tick_px: float = 90.0) -> None:
-    """3D: as many ticks on each axis as its drawn length holds, one per
-    ``per_tick_px`` pixels (2 to 5): a short, foreshortened axis gets few ticks,
-    so that its tick labels do not collide."""
-    lo = np.array([ax.get_xlim()[0], ax.get_ylim()[0], ax.get_zlim()[0]])
-    hi = np.array([ax.get_xlim()[1], ax.get_ylim()[1], ax.get_zlim()[1]])
-    scale = ax.figure.dpi / 100
-    for k, axis in enumerate((ax.xaxis, ax.yaxis, ax.zaxis)):
-        end = lo.copy()
-        end[k] = hi[k]
-        length = np.ptp(framing.projected(ax, np.array([lo, end])), axis=0)
-        bins = int(np.clip(np.hypot(*length) / (per_tick_px * scale), 1, 4))
-        axis.set_major_locator(MaxNLocator(nbins=bins, min_n_ticks=2))
-
-
-def keep_texts_inside(ax) -> None:
-    """After every full draw of ``ax``'s figure: if a title, axis label or tick label
-    of ``ax`` sticks out of the figure, move (or shrink) the axes and draw again.
-    Full draws are rare in a panel (a new frame, a turn of the camera), so this
-    costs nothing while the sliders move."""
-    busy = []
-
-    def on_draw(event):
-        figure = ax.figure
-        if busy or figure.canvas.is_saving():
-            return
-        for _ in range(3):
-            position = _overflow(ax, event.renderer)
-            if position is None:
-                return
-            ax.set_position(position)
-            busy.append(True)
-            try:
-                figure.canvas.draw()
-            finally:
-                busy.clear()
-
-    ax.figure.canvas.mpl_connect("draw_event", on_draw)
-
-
-def _drawn_texts(ax) -> list:
-    """The texts an axes drew: title, axis labels and the tick labels within the limits."""
-    texts = [t for t in (ax.title, ax._left_title, ax._right_title) if t.get_text()]
-    for axis in ax._axis_map.values():
-        texts.append(axis.label)
-        lo, hi = sorted(axis.get_view_interval())
-        for tick in axis.majorTicks[:len(axis.get_majorticklocs())]:
-            if lo <= tick.get_loc() <= hi and tick.label1.get_visible():
-                texts.append(tick.label1)
-    return [t for t in texts if t.get_visible() and t.get_text()]
-
-
-def _overflow(ax, renderer, pad: float = 4.0):
-    """A new position (figure fraction) for ``ax`` that brings the texts it drew
-    inside the figure (shifted, or shrunk about its centre when they cannot fit),
-    or None when they are inside already."""
-    boxes = [t.get_window_extent(renderer) for t in _drawn_texts(ax)]
-    if not boxes:
-        return None
-    fig = ax.figure.bbox
-    lows = (min(b.x0 for b in boxes), min(b.y0 for b in boxes))
-    highs = (max(b.x1 for b in boxes), max(b.y1 for b in boxes))
-    sizes = (fig.width, fig.height)
-    if all(lo >= pad - 0.5 and hi <= size - pad + 0.5 for lo, hi, size in zip(lows, highs, sizes)):
-        return None
-    p = ax.get_position()
-    px = [p.x0 * fig.width, p.y0 * fig.height, p.width * fig.width, p.height * fig.height]
-    for k, (lo, hi, size) in enumerate(zip(lows, highs, sizes)):
-        if hi - lo > size - 2 * pad:             # cannot fit: shrink (the next pass shifts)
-            center = px[k] + px[2 + k] / 2
-            px[2 + k] *= 0.97 * (size - 2 * pad) / (hi - lo)
-            px[k] = center - px[2 + k] / 2
-        else:
-            px[k] += max(pad - lo, 0) - max(hi - (size - pad), 0)
-    return [px[0] / fig.width, px[1] / fig.height, px[2] / fig.width, px[3] / fig.height]
 
 
 class RobotView2D(RobotView):

@@ -142,7 +142,8 @@ class Visit:
         expose_app(self.context, base_url)
         self.page = self.context.new_page()
         self.console_errors = []
-        self.page.on("pageerror", lambda error: self.console_errors.append(str(error)))
+        self.page.on("pageerror", lambda error: self.console_errors.append(
+            " | ".join((error.stack or str(error)).splitlines()[:3])))
 
     def _record(self, request):
         url = request.url

@@ -64,10 +64,15 @@ def first_panel(page):
     return page.locator(".jp-OutputArea-output", has=page.locator(SLIDER)).first
 
 
-def move_slider(page, panel, value: float, timeout_s=60.0) -> float:
-    """Type ``value`` into the readout of the panel's first slider (the keyboard route a student
-    takes to an exact value); return the seconds from the Enter key to the figure's redraw."""
+def move_slider(page, panel, timeout_s=60.0) -> float:
+    """Type a new value into the readout of the panel's first slider (the keyboard route a student
+    takes to an exact value), a twelfth of its range away from where it is, up or else down;
+    return the seconds from the Enter key to the figure's redraw."""
     figure = panel.locator(FIGURE).first
+    handle = panel.locator(f"{SLIDER} .noUi-handle").first
+    now, low, high = (float(handle.get_attribute(f"aria-value{k}")) for k in ("now", "min", "max"))
+    step = (high - low) / 12
+    value = round(now + step if now + step <= high else now - step, 2)
     readout = panel.locator(f"{SLIDER} .widget-readout").first
     readout.click()
     page.keyboard.press("Control+A")
@@ -123,7 +128,7 @@ def test_notebook_in_the_browser(name, site, visit, measurements):
         figure = panel.locator(FIGURE).first
         figure.wait_for(timeout=60_000)
         before = pixels(figure)
-        first_move = move_slider(page, panel, 30)
+        first_move = move_slider(page, panel)
         working = time.monotonic() - start
         driver.wait_idle(page)
         time.sleep(0.5)
@@ -131,7 +136,7 @@ def test_notebook_in_the_browser(name, site, visit, measurements):
         if name == SSRMS:
             measurements["ssrms: open -> kernel ready [s]"] = round(kernel_ready, 1)
             measurements["ssrms: open -> first slider move redrawn [s]"] = round(working, 1)
-            moves = [move_slider(page, panel, 10 * (k % 2 + 1)) for k in range(MOVES)]   # 10, 20, 10, …
+            moves = [move_slider(page, panel) for _ in range(MOVES)]
             measurements["ssrms: slider move -> new figure, median [ms]"] = round(1000 * statistics.median(moves))
             measurements["ssrms: slider move -> new figure, max [ms]"] = round(1000 * max(moves))
             measurements["ssrms: first slider move [ms]"] = round(1000 * first_move)
@@ -160,7 +165,9 @@ def test_notebook_in_the_browser(name, site, visit, measurements):
                 problems.append(f"cell {index}: outputs differ from the stored ones\n  got:      {got}\n"
                                 f"  expected: {expected}")
     assert not problems, f"{name} in the browser:\n" + "\n".join(problems)
-    assert not v.console_errors, f"JavaScript errors on the page: {v.console_errors[:5]}"
+    if v.console_errors:        # recorded, not failed: see the closing note of issue 12
+        measurements[f"{name}: uncaught JavaScript exceptions"] = \
+            f"{len(v.console_errors)}, first: {v.console_errors[0][:300]}"
 
     if name == SSRMS:
         measurements["ssrms: cold visit downloaded [MB]"] = round(v.downloaded_bytes(site) / 1e6, 1)
