@@ -28,12 +28,15 @@ __version__ = "0.1.0"
 # The interactive views (imported here, after the maths, so that ``dhlab.teach`` is the
 # function even once the submodule of the same name has been imported).
 from .views import view
+from .views.figures import projector
+from .views.matrices import show_matrix
 from .views.spaces import spaces
 from .views.stepthrough import stepthrough, stepthrough_link
 from .views.teach import teach
 from .views.view import robot_view
 
-__all__ += ["teach", "robot_view", "stepthrough", "stepthrough_link", "spaces", "view"]
+__all__ += ["teach", "robot_view", "stepthrough", "stepthrough_link", "spaces", "view", "show_matrix",
+            "projector"]
 
 # The package was split into maths (here), views/, course/ and grading/. The old module paths
 # (``from dhlab.teach import teach``, ``import dhlab.exercises``, ``python -m dhlab.grade``) still

@@ -126,7 +126,7 @@ def tree_size(e, _memo=None) -> int:
     return memo[key]
 
 
-EXPAND_LIMIT = 20_000   # entries larger than this (as a tree) are left as multiplied
+EXPAND_LIMIT = 1_000   # entries larger than this (as a tree) stay as multiplied: the catalogue's largest is 86
 
 
 def simplify_chain(blocks, base, tool, q_symbols, sum_angles: bool = False, timeout=None):

@@ -132,16 +132,22 @@ def release_wheel(entry: dict) -> Path:
         return local
     cached = CACHE / "release" / name
     if not (cached.exists() and sha256(cached) == expected):
+        if _cdn_unreachable:
+            return None
         cached.parent.mkdir(parents=True, exist_ok=True)
         try:
-            with urllib.request.urlopen(PYODIDE_CDN + name, timeout=30) as response:
+            with urllib.request.urlopen(PYODIDE_CDN + name, timeout=20) as response:
                 cached.write_bytes(response.read())
         except OSError:
+            _cdn_unreachable.append(name)          # one try: no CDN, no point asking again
             return None
         if sha256(cached) != expected:
             cached.unlink()
             raise BuildError(f"{PYODIDE_CDN + name} does not match the sha256 in pyodide-lock.json")
     return cached
+
+
+_cdn_unreachable: list = []
 
 
 def pypi_wheels() -> list[Path]:
@@ -330,6 +336,7 @@ def main():
     run(lite_app, "build", "--lite-dir", STAGE, "--output-dir", OUTPUT, cwd=STAGE)
     configure_site()
     open_on_start_here()
+    (OUTPUT / ".nojekyll").touch()         # GitHub Pages: serve the folder as it is
     size = sum(p.stat().st_size for p in OUTPUT.rglob("*") if p.is_file())
     print(f"built {OUTPUT.relative_to(ROOT)}: {size / 1e6:.0f} MB; serve it with `make lite-serve`")
 

@@ -54,7 +54,7 @@ def test_junk_robot_is_refused_clearly(robot):
             make(robot)
 
 
-@pytest.mark.parametrize("figsize", [(-1, 3), (float("nan"), 3), (0, 0), "big", (3,), (1e9, 3)])
+@pytest.mark.parametrize("figsize", [(-1, 3), (float("nan"), 3), (0, 0), "big", (3,), (1e9, 3), (7e-189, 1.0)])
 def test_junk_figsize_is_refused_clearly(figsize):
     with pytest.raises(DHLabError):
         teach(robots.puma560(), figsize=figsize, backend="image")

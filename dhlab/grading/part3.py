@@ -179,7 +179,7 @@ def analyse(answers: Answers, ref=None) -> Analysis:
             item = Item(f"T{i}", None if row is NOT_ANSWERED else False,
                         "not answered" if row is NOT_ANSWERED else row.why)
             states = _dedupe([_State(ref.home_frames[i], s.cost + 1, s.charged + (i,), s.items + [item],
-                                     s.frames + [ref.home_frames[i]], s.own + [False]) for s in states])
+                                     s.frames + [ref.home_frames[i]], s.own + [False], s.edits) for s in states])
             continue
         structural_ok = structural_ok and not _structure(i, row)
         A = matrix(row)

@@ -1,7 +1,13 @@
 """The interactive views: robots drawn in place with matplotlib, moved by ipywidgets sliders.
 
+- :mod:`~dhlab.views.figures` — figures that are pictures: readable sizes, never clipped, the projector setting
 - :mod:`~dhlab.views.livefigure` — a figure redrawn in place (blitting), inline or ipympl
+- :mod:`~dhlab.views.camera` — camera presets, and a default from which every triad reads right-handed
+- :mod:`~dhlab.views.framing` — the robot fills its view, re-framed with hysteresis
+- :mod:`~dhlab.views.labels` — frame labels that never pile up
+- :mod:`~dhlab.views.layout` — tick labels that do not collide, texts kept inside the figure
 - :mod:`~dhlab.views.view` — a robot as a stick figure with x/y/z frame triads
+- :mod:`~dhlab.views.matrices` — symbolic matrices that fit the notebook column (``show_matrix``)
 - :mod:`~dhlab.views.panel` — what the panels share (sliders, layout, error display)
 - :mod:`~dhlab.views.teach` — the teach panel: one slider per joint, live pose and matrix
 - :mod:`~dhlab.views.stepthrough` — one DH link as Rz, Tz, Tx, Rx applied in turn

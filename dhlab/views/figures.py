@@ -115,6 +115,9 @@ def figure_size(figsize=None, dpi=None) -> tuple:
                      for v in figsize)
     if max(width, height) > 40:
         raise DHLabError(f"figsize {figsize!r} is larger than 40 inches; give it in inches, e.g. (6, 4).")
+    if not 0.1 <= width / height <= 10:
+        raise DHLabError(f"figsize {figsize!r} is too thin to show anything: keep the width and the height "
+                         "within a factor 10 of each other, e.g. (6, 4).")
     base = MIN_DPI if dpi is None else _positive(dpi, "dpi", hint="dots per inch, e.g. 100")
     base = max(base, MIN_DPI)
     if width * base < MIN_WIDTH_PX:                       # too narrow: scale up, keep the shape

@@ -108,13 +108,13 @@ def center_on(ax, points, lo, hi):
     directions) so that the picture of ``points`` sits in the middle of the box's
     picture. Returns the new (lo, hi)."""
     center = (lo + hi) / 2
-    pixels = projected(ax, points)
-    middle = (pixels.max(axis=0) + pixels.min(axis=0)) / 2
-    base = projected(ax, center[None])[0]
     elev, azim = np.radians(ax.elev), np.radians(ax.azim)
     right = np.array([-np.sin(azim), np.cos(azim), 0.0])
     up = np.array([-np.sin(elev) * np.cos(azim), -np.sin(elev) * np.sin(azim), np.cos(elev)])
-    per_unit = [np.linalg.norm(projected(ax, (center + v)[None])[0] - base) for v in (right, up)]
+    pixels = projected(ax, np.vstack([points, center, center + right, center + up]))   # one projection
+    pixels, (base, at_right, at_up) = pixels[:-3], pixels[-3:]
+    middle = (pixels.max(axis=0) + pixels.min(axis=0)) / 2
+    per_unit = [np.linalg.norm(at_right - base), np.linalg.norm(at_up - base)]
     if min(per_unit) < 1e-9:
         return lo, hi
     shift = (middle - base) / per_unit

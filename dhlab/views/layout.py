@@ -25,11 +25,10 @@ def space_ticks(ax, per_tick_px: float = 90.0) -> None:
     lo = np.array([ax.get_xlim()[0], ax.get_ylim()[0], ax.get_zlim()[0]])
     hi = np.array([ax.get_xlim()[1], ax.get_ylim()[1], ax.get_zlim()[1]])
     scale = ax.figure.dpi / 100
+    ends = np.array([lo] + [np.where(np.arange(3) == k, hi, lo) for k in range(3)])
+    pixels = framing.projected(ax, ends)                  # the box's corner and its three edges' ends
     for k, axis in enumerate((ax.xaxis, ax.yaxis, ax.zaxis)):
-        end = lo.copy()
-        end[k] = hi[k]
-        length = np.ptp(framing.projected(ax, np.array([lo, end])), axis=0)
-        drawn = float(np.hypot(*length))
+        drawn = float(np.linalg.norm(pixels[k + 1] - pixels[0]))
         if drawn < 0.4 * per_tick_px * scale:     # seen end-on (a top view's z): no tick labels
             axis.set_major_locator(NullLocator())
             continue

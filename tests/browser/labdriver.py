@@ -4,9 +4,9 @@ The browser tests use these helpers; everything is read from the page itself
 (the notebook model that JupyterLab holds and the DOM it renders), so a check
 sees what a student sees.
 
-* :func:`lab_command` starts JupyterLab with every cell kept in the DOM
-  (``windowingMode: none``), so that outputs far down the notebook are laid
-  out and can be measured;
+* :func:`lab_command`, :func:`write_lab_settings`: JupyterLab with every cell
+  kept in the DOM (``windowingMode: none``), so that outputs far down the
+  notebook are laid out and can be measured;
 * :func:`open_notebook`, :func:`run_all`: open a notebook, wait for its kernel,
   Run All and wait until every cell has run and every widget is drawn;
 * :func:`outputs_report`: per cell, the error outputs, figures shown as text,
@@ -219,16 +219,17 @@ def outputs_report(page) -> dict:
     return page.evaluate(_REPORT_JS.replace("NOTEBOOK", NOTEBOOK_JS), FIGURE_TEXT.pattern)
 
 
-def problems(report: dict) -> list:
-    """One line per failure (errors, figures as text, widgets not shown, outputs too wide)."""
+def problems(report: dict, excerpts: bool = True) -> list:
+    """One line per failure (errors, figures as text, widgets not shown, outputs too
+    wide); ``excerpts=False`` leaves out the text quoted from an output too wide."""
     lines = []
     for cell in report["cells"]:
         where = f"cell {cell['index']} ({_first_line(cell['source'])})"
         lines += [f"{where}: error output {e}" for e in cell["errors"]]
         lines += [f"{where}: figure shown as text {t!r}" for t in cell["figure_text"]]
         lines += [f"{where}: widget not shown: {w}" for w in cell["widget_failures"]]
-        lines += [f"{where}: output {w['width']} px wide in a {w['column']} px column "
-                  f"({w['element']}: {w['text']!r})" for w in cell["too_wide"]]
+        lines += [f"{where}: output {w['width'] if excerpts else 'too'} px wide in a {w['column']} px column"
+                  + (f" ({w['element']}: {w['text']!r})" if excerpts else "") for w in cell["too_wide"]]
     return lines
 
 
@@ -284,7 +285,8 @@ def changed_fraction(before: np.ndarray, after: np.ndarray) -> float:
 # --- pictures ----------------------------------------------------------------------
 
 def full_page_screenshot(page, path: Path, max_height: int = 30_000) -> Path:
-    """The whole notebook in one PNG: the window is made as tall as the notebook
+    """The whole notebook in one picture (PNG; JPEG for a ``.jpg`` path, though a
+    page of text is smaller as PNG): the window is made as tall as the notebook
     (its width, and so the layout across, is kept), then put back."""
     path.parent.mkdir(parents=True, exist_ok=True)
     scroller = ".jp-NotebookPanel:not(.lm-mod-hidden) .jp-WindowedPanel-outer"
@@ -296,7 +298,10 @@ def full_page_screenshot(page, path: Path, max_height: int = 30_000) -> Path:
     try:
         page.evaluate(f"() => {{ const s = document.querySelector('{scroller}'); if (s) s.scrollTop = 0; }}")
         time.sleep(0.8)
-        page.screenshot(path=str(path))
+        if path.suffix.lower() in (".jpg", ".jpeg"):
+            page.screenshot(path=str(path), type="jpeg", quality=80)
+        else:
+            page.screenshot(path=str(path))
     finally:
         page.set_viewport_size(size)
     return path

@@ -13,8 +13,9 @@ under ``%matplotlib widget`` (ipympl), the test checks that
 * in every panel (a slider and a figure in one output), moving the first slider
   with the keyboard changes the figure's pixels and shows no "Error while updating".
 
-It leaves a screenshot of the whole notebook and a JSON report per notebook and
-backend in ``tests/browser/results/``.
+It leaves a screenshot of the whole notebook (``<notebook>-<backend>.png``), a
+JSON report (every check per cell, and where the time went) and, for an output
+too wide, a picture of that output, in ``tests/browser/results/``.
 """
 from __future__ import annotations
 
@@ -28,7 +29,8 @@ import pytest
 from labdriver import (FIGURE_SELECTOR, changed_fraction, close_notebook, full_page_screenshot,
                        open_notebook, outputs_report, panels, problems, run_all, settled, with_backend)
 
-NOTEBOOKS = sorted((Path(__file__).resolve().parents[2] / "notebooks").glob("*.ipynb"))
+HERE = Path(__file__).resolve().parent
+NOTEBOOKS = sorted((HERE.parents[1] / "notebooks").glob("*.ipynb"))
 BACKENDS = ["inline", "widget"]
 MIN_CHANGED = 0.0005           # a moved slider must change at least this fraction of the figure's pixels
 
@@ -50,7 +52,7 @@ def move_first_slider(page, output) -> tuple:
     that changed, what the page showed wrong or '')."""
     figure = output.locator(FIGURE_SELECTOR).first
     figure.scroll_into_view_if_needed()
-    before = settled(figure)
+    before = settled(figure, pause=0.2)
     handle = output.locator(".widget-slider .noUi-handle").first
     changed = 0.0
     for key in ("ArrowRight", "ArrowLeft"):        # a slider at its maximum only moves left
@@ -58,22 +60,19 @@ def move_first_slider(page, output) -> tuple:
         for _ in range(12):
             page.keyboard.press(key)
         time.sleep(0.3)
-        changed = changed_fraction(before, settled(figure))
+        changed = changed_fraction(before, settled(figure, pause=0.2))
         if changed >= MIN_CHANGED:
             break
     errors = output.locator(".widget-html", has_text="Error while updating")
     return changed, (errors.first.inner_text()[:300] if errors.count() else "")
 
 
-@pytest.mark.parametrize("backend", BACKENDS)
-@pytest.mark.parametrize("notebook", NOTEBOOKS, ids=[p.stem for p in NOTEBOOKS])
-def test_notebook_in_jupyterlab(lab_page, notebook_folders, results_dir, notebook, backend):
-    copy = with_backend(notebook, notebook_folders / backend / notebook.name, backend)
-    page = lab_page
-    name = f"{notebook.stem}-{backend}"
+def check_notebook(page, relative_path: str, name: str, results_dir: Path) -> list:
+    """Open, Run All, check, move one slider per panel, screenshot; one line per
+    failure found. Leaves ``<name>.json`` and ``<name>.png`` in ``results_dir``."""
     clock = [time.monotonic()]
     try:
-        open_notebook(page, f"{backend}/{copy.name}")
+        open_notebook(page, relative_path)
         clock.append(time.monotonic())
         run_all(page)
         clock.append(time.monotonic())
@@ -91,8 +90,9 @@ def test_notebook_in_jupyterlab(lab_page, notebook_folders, results_dir, noteboo
             if error:
                 failures.append(f"cell {index}: the panel shows {error!r}")
         after = outputs_report(page)                     # errors raised by the slider moves
-        failures += [f"after the slider moves: {line}" for line in problems(after)
-                     if line not in problems(report)]
+        seen = set(problems(report, excerpts=False))
+        failures += [f"after the slider moves: {line}" for line, short in
+                     zip(problems(after), problems(after, excerpts=False)) if short not in seen]
         clock.append(time.monotonic())
         for cell in after["cells"]:          # a close look at each output too wide, for the report
             if cell["too_wide"]:
@@ -100,7 +100,7 @@ def test_notebook_in_jupyterlab(lab_page, notebook_folders, results_dir, noteboo
                     .screenshot(path=str(results_dir / f"{name}-cell{cell['index']}-too-wide.png"))
         full_page_screenshot(page, results_dir / f"{name}.png")
         clock.append(time.monotonic())
-        report.update(notebook=notebook.name, backend=backend, panels=moved, failures=failures,
+        report.update(notebook=relative_path, panels=moved, failures=failures,
                       seconds=dict(zip(["open", "run_all", "panels", "screenshot"],
                                        [round(b - a, 1) for a, b in zip(clock, clock[1:])])))
         (results_dir / f"{name}.json").write_text(json.dumps(report, indent=1))
@@ -109,4 +109,24 @@ def test_notebook_in_jupyterlab(lab_page, notebook_folders, results_dir, noteboo
         raise
     finally:
         close_notebook(page)
+    return failures
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("notebook", NOTEBOOKS, ids=[p.stem for p in NOTEBOOKS])
+def test_notebook_in_jupyterlab(lab_page, notebook_folders, results_dir, notebook, backend):
+    copy = with_backend(notebook, notebook_folders / backend / notebook.name, backend)
+    failures = check_notebook(lab_page, f"{backend}/{copy.name}", f"{notebook.stem}-{backend}", results_dir)
     assert not failures, f"{notebook.name} ({backend}):\n  " + "\n  ".join(failures)
+
+
+def test_the_checks_can_fail(lab_page, lab_root, results_dir):
+    """A notebook made to fail every check (``faulty_demo.ipynb``): each failure is found."""
+    copy = with_backend(HERE / "faulty_demo.ipynb", lab_root / "faulty" / "faulty_demo.ipynb", "inline")
+    failures = "\n".join(check_notebook(lab_page, f"faulty/{copy.name}", "faulty_demo", results_dir))
+    for expected in ["error output ValueError: a mistake made on purpose",
+                     "figure shown as text '<Figure size 640x480 with 1 Axes>'",
+                     "widget not shown: Error displaying widget",
+                     "px wide in a",
+                     "moving the panel's first slider changed only 0.000%"]:
+        assert expected in failures, f"not found: {expected!r} in:\n{failures}"

@@ -30,6 +30,7 @@ def cropped_png(png: bytes) -> bytes:
 
     image = Image.open(io.BytesIO(png)).convert("RGB")
     ink = np.asarray(image).min(axis=2) < 245
+    ink[ink.mean(axis=1) > 0.9] = False         # a rule across the whole width (a cell's border) is not the panel
     rows, cols = np.flatnonzero(ink.any(axis=1)), np.flatnonzero(ink.any(axis=0))
     box = (max(cols[0] - MARGIN, 0), max(rows[0] - MARGIN, 0),
            min(cols[-1] + MARGIN + 1, image.width), min(rows[-1] + MARGIN + 1, image.height))
