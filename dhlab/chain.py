@@ -351,7 +351,11 @@ def _link_list(links, expected=None, what: str = "a Link (or RevoluteDH / Prisma
     if isinstance(links, (str, bytes, dict, Link)) or not hasattr(links, "__iter__"):
         raise DHLabError(f"a robot takes a list of links, e.g. [RevoluteDH(a=1), RevoluteDH(a=0.5)]; "
                          f"got {describe(links)}.")
-    links = list(links)
+    try:
+        links = list(links)
+    except TypeError:            # iterable in name only, e.g. a 0-d numpy array
+        raise DHLabError(f"a robot takes a list of links, e.g. [RevoluteDH(a=1), RevoluteDH(a=0.5)]; "
+                         f"got {describe(links)}.") from None
     if not links:
         raise DHLabError("a robot needs at least one link.")
     for i, link in enumerate(links, start=1):
@@ -367,7 +371,10 @@ def _joint_symbols(names, n: int) -> tuple:
     if isinstance(names, (str, bytes, dict)) or not hasattr(names, "__iter__"):
         raise DHLabError(f"joint_symbols must be a list of {n} names, e.g. {[f'q{i + 1}' for i in range(n)]}; "
                          f"got {describe(names)}.")
-    names = list(names)
+    try:
+        names = list(names)
+    except TypeError:            # iterable in name only, e.g. a 0-d numpy array
+        raise DHLabError(f"joint_symbols must be a list of {n} names; got {describe(names)}.") from None
     if len(names) != n:
         raise DHLabError(f"joint_symbols must name {n} joints, got {len(names)}: {describe(names)}.")
     text = []

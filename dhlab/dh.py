@@ -182,12 +182,20 @@ def _rows(rows) -> list:
     example = "[('q1', 0, 1, 0), ('q2', 0, 0.5, 0)]"
     if isinstance(rows, (str, bytes, dict)) or not hasattr(rows, "__iter__"):
         raise DHLabError(f"the table must be a list of rows (θ, d, a, α), e.g. {example}; got {describe(rows)}.")
-    rows = list(rows)
+    try:
+        rows = list(rows)
+    except TypeError:            # iterable in name only, e.g. a 0-d numpy array
+        raise DHLabError(f"the table must be a list of rows (θ, d, a, α), e.g. {example}; "
+                         f"got {describe(rows)}.") from None
     if not rows:
         raise DHLabError(f"the table is empty: give one row (θ, d, a, α) per joint, e.g. {example}.")
     for i, row in enumerate(rows, start=1):
-        if isinstance(row, (str, bytes, dict)) or not hasattr(row, "__len__") or len(row) != 4:
-            count = len(row) if hasattr(row, "__len__") and not isinstance(row, (str, bytes)) else "not 4"
+        try:
+            count = None if isinstance(row, (str, bytes, dict)) else len(row)
+        except TypeError:        # no length (a number, a 0-d array)
+            count = None
+        if count != 4:
+            count = "not 4" if count is None else count
             raise DHLabError(f"row {i} must have 4 entries (θ, d, a, α), got {count}: {describe(row)}.")
     return rows
 

@@ -17,12 +17,12 @@ def test_everything_in_all_exists():
 
 
 def test_notebook_kernels_use_private_unix_sockets():
-    """The fix of the flaky "Kernel didn't respond in 60 seconds" (see tests/conftest.py): nbval's
+    """The fix of the flaky "Kernel didn't respond in 60 seconds" (see tests/kernelsockets.py): nbval's
     kernels listen on Unix sockets in a folder of their own, so no TCP port is picked at all."""
     import os
 
     import nbval.kernel
-    from conftest import PrivateSocketKernelManager
+    from kernelsockets import PrivateSocketKernelManager
 
     assert nbval.kernel.KernelManager is PrivateSocketKernelManager
     a, b = PrivateSocketKernelManager(), PrivateSocketKernelManager()
