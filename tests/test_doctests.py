@@ -7,7 +7,8 @@ import pytest
 
 import dhlab
 
-MODULES = sorted(m.name for m in pkgutil.iter_modules(dhlab.__path__, "dhlab."))
+# every module, subpackages included (dhlab.views.camera, dhlab.grading.release, ...)
+MODULES = sorted(m.name for m in pkgutil.walk_packages(dhlab.__path__, "dhlab."))
 
 
 @pytest.mark.parametrize("name", ["dhlab"] + MODULES)
