@@ -91,9 +91,17 @@ def _where(i, j, shape, index_style) -> str:
 
 
 def _entry_text(value) -> str:
+    """One entry of the student's matrix as the feedback quotes it (never raises)."""
     if isinstance(value, sp.Basic) and value.free_symbols:
         return sp.sstr(value)
-    return num(float(sp.N(value)) if isinstance(value, sp.Basic) else float(value))
+    try:
+        z = complex(sp.N(value)) if isinstance(value, sp.Basic) else complex(value)
+    except (TypeError, ValueError, OverflowError):
+        return str(value)
+    # a vanishing imaginary part (1e-210j) is rounding, not an answer: quote the real number
+    if abs(z.imag) <= 1e-12 * max(1.0, abs(z.real)):
+        return num(z.real)
+    return sp.sstr(value) if isinstance(value, sp.Basic) else str(value)
 
 
 def _shape_problem(got, expected, name):
