@@ -68,6 +68,14 @@ DEPENDS = {
     "ipykernel": [],
     "matplotlib-fontlist": ["matplotlib"],
 }
+# Dependencies of the release's packages that the course never imports: not shipped, not fetched.
+# matplotlib needs fontTools only to embed fonts in PDF/PS files and pytz not at all (3.8 uses
+# zoneinfo); the course draws PNGs. Saving a figure as PDF in the browser edition therefore fails
+# with "No module named 'fontTools'".
+NOT_SHIPPED = {"matplotlib": ["fonttools", "pytz"]}
+# (jedi, 1.6 MB, stays: the kernel turns IPython's jedi completion on, and without jedi Tab
+# completes nothing. ssl and sqlite3 stay too: the kernel loads them, and IPython's history
+# imports sqlite3.)
 START_HERE = "01_start_here.ipynb"
 
 
@@ -224,6 +232,8 @@ def assemble_pyodide(target: Path):
         entry = lock_entry(wheel)
         added[entry["name"]] = entry
         shutil.copy2(wheel, target / wheel.name)
+    for key, dropped in NOT_SHIPPED.items():
+        lock["packages"][key]["depends"] = [d for d in lock["packages"][key]["depends"] if d not in dropped]
     packages = {**lock["packages"], **added}
     ship = closure(packages, ROOTS)
     missing = []
@@ -243,6 +253,15 @@ def assemble_pyodide(target: Path):
             f"\n  https://github.com/pyodide/pyodide/releases/download/{PYODIDE_VERSION}/"
             f"pyodide-{PYODIDE_VERSION}.tar.bz2")
     lock["packages"] = {key: packages[key] for key in ship}
+    (target / "pyodide-lock.json").write_text(json.dumps(lock, indent=1, sort_keys=True))
+    # Bytecode, made once here by this Pyodide, and no test suites, type stubs or unused fonts
+    # (lite/precompile.py says why and how). The rewritten wheels get their new sha256 in the lock:
+    # Pyodide checks it on every load. (The release's wheels were checked above, as they came.)
+    for path in target.glob("*.whl"):
+        path.chmod(0o644)                       # the release's files were copied read-only
+    run("node", LITE / "precompile.mjs", target)
+    for entry in lock["packages"].values():
+        entry["sha256"] = sha256(target / entry["file_name"])
     (target / "pyodide-lock.json").write_text(json.dumps(lock, indent=1, sort_keys=True))
     # matplotlib's font list, built once here rather than in every kernel. The release's matplotlib
     # wheel ships a stale one (made by matplotlib 3.9, so 3.8 rebuilds it): ours depends on
@@ -268,14 +287,19 @@ def matplotlib_fontlist_wheel(pyodide: Path) -> Path:
     files = {"matplotlib/fontlist.json": json_path.read_bytes(),
              f"{name}.dist-info/METADATA": f"Metadata-Version: 2.1\nName: matplotlib-fontlist\nVersion: {version}\n".encode(),
              f"{name}.dist-info/WHEEL": b"Wheel-Version: 1.0\nGenerator: dhlab lite/build.py\nRoot-Is-Purelib: true\nTag: py3-none-any\n"}
-    record = "".join(f"{path},sha256={base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b'=').decode()},{len(data)}\n"
-                     for path, data in files.items()) + f"{name}.dist-info/RECORD,,\n"
-    files[f"{name}.dist-info/RECORD"] = record.encode()
-    with zipfile.ZipFile(wheel, "w") as archive:
-        for path, data in files.items():
-            info = zipfile.ZipInfo(path, date_time=(2026, 1, 1, 0, 0, 0))     # same bytes every build
+    return write_wheel(wheel, name, files)
+
+
+def write_wheel(path: Path, name: str, files: dict) -> Path:
+    """A wheel of ``files`` ({path: bytes}) with its RECORD; the same bytes on every build."""
+    record = "".join(f"{p},sha256={base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b'=').decode()},{len(data)}\n"
+                     for p, data in files.items()) + f"{name}.dist-info/RECORD,,\n"
+    files = {**files, f"{name}.dist-info/RECORD": record.encode()}
+    with zipfile.ZipFile(path, "w") as archive:
+        for p, data in files.items():
+            info = zipfile.ZipInfo(p, date_time=(2026, 1, 1, 0, 0, 0))
             archive.writestr(info, data, compress_type=zipfile.ZIP_DEFLATED)
-    return wheel
+    return path
 
 
 def stage_site():

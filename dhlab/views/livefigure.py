@@ -34,6 +34,7 @@ from __future__ import annotations
 import base64
 import functools
 import struct
+import sys
 import weakref
 import zlib
 
@@ -49,6 +50,12 @@ __all__ = ["LiveFigure", "ipympl_active", "forget_previous_run", "encode_png"]
 # ipympl loses a diff frame now and then, which leaves stale pixels until the
 # next full image (matplotlib#19116); sending a full frame every so often heals it.
 _FULL_FRAME_EVERY = 30
+
+# In the browser edition (Pyodide: sys.platform "emscripten"), dropping the alpha channel is most
+# of a PNG's cost (a strided copy: 17 ms a frame there, against 7-8 ms for an RGBA PNG whose rows
+# are plain copies); the file is ~13 % larger, which costs nothing between a web worker and its
+# page. Elsewhere RGB is as fast (7.5 vs 8 ms on the desktop) and smaller.
+_PNG_WITH_ALPHA = sys.platform == "emscripten"
 
 
 def ipympl_active() -> bool:
@@ -151,7 +158,7 @@ class LiveFigure:
         """The pixels as they are now, as PNG bytes."""
         if self._background is None:
             self.figure.canvas.draw()
-        return encode_png(np.asarray(self.figure.canvas.buffer_rgba()))
+        return encode_png(np.asarray(self.figure.canvas.buffer_rgba()), alpha=_PNG_WITH_ALPHA)
 
     def close(self):
         """Release the widget (its browser view goes away); the figure can be garbage-collected."""

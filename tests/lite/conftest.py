@@ -141,9 +141,13 @@ class Visit:
         self.context.on("request", self._record)
         expose_app(self.context, base_url)
         self.page = self.context.new_page()
+        # uncaught exceptions and console.error() of the page and of its workers (Pyodide's):
+        # the test fails on any (the site turns off what made them: lite/jupyter-lite.json)
         self.console_errors = []
         self.page.on("pageerror", lambda error: self.console_errors.append(
-            " | ".join((error.stack or str(error)).splitlines()[:3])))
+            "uncaught: " + " | ".join((error.stack or str(error)).splitlines()[:3])))
+        self.page.on("console", lambda message: message.type == "error" and self.console_errors.append(
+            "console.error: " + " | ".join(message.text.splitlines()[:3])))
 
     def _record(self, request):
         url = request.url
