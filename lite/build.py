@@ -180,7 +180,28 @@ def dhlab_wheel() -> Path:
     folder = CACHE / "dist"
     shutil.rmtree(folder, ignore_errors=True)
     run(sys.executable, "-m", "pip", "wheel", "--quiet", "--no-deps", "-w", folder, ROOT)
-    return next(folder.glob("dhlab-*.whl"))
+    return without_answers(next(folder.glob("dhlab-*.whl")))
+
+
+# The assignment's solutions notebook is package data for the teacher's grader; a public web site
+# must not serve it (anyone could unzip the wheel), and nothing in the browser reads it.
+ANSWERS = "dhlab/grading/data/"
+
+
+def without_answers(wheel: Path) -> Path:
+    """The wheel rewritten without the solutions notebook (its RECORD lines dropped too)."""
+    with zipfile.ZipFile(wheel) as archive:
+        members = [(i, archive.read(i)) for i in archive.infolist() if not i.filename.startswith(ANSWERS)]
+    rewritten = []
+    for info, data in members:
+        if info.filename.endswith(".dist-info/RECORD"):
+            lines = data.decode().splitlines(keepends=True)
+            data = "".join(line for line in lines if not line.startswith(ANSWERS)).encode()
+        rewritten.append((info, data))
+    with zipfile.ZipFile(wheel, "w", zipfile.ZIP_DEFLATED) as archive:
+        for info, data in rewritten:
+            archive.writestr(info, data)
+    return wheel
 
 
 def kernel_wheels() -> list[Path]:
@@ -308,7 +329,7 @@ def stage_site():
     STAGE.mkdir(parents=True)
     for name in ["jupyter_lite_config.json", "jupyter-lite.json", "overrides.json"]:
         shutil.copy2(LITE / name, STAGE / name)
-    notebooks = sorted((ROOT / "notebooks").glob("*.ipynb"))    # not notebooks/source: the answers
+    notebooks = sorted((ROOT / "notebooks").glob("*.ipynb"))    # the answers stay in the package, not on the site
     if not any(nb.name == START_HERE for nb in notebooks):
         raise BuildError(f"notebooks/{START_HERE} is missing: the site opens on it")
     (STAGE / "files").mkdir()

@@ -18,6 +18,7 @@ import statistics
 import subprocess
 import sys
 import time
+import zipfile
 from pathlib import Path
 
 import pytest
@@ -190,3 +191,9 @@ def test_site_size(site, measurements):
     measurements["site folder: Pyodide and its packages [MB]"] = round(pyodide / 1e6, 1)
     assert (site / "files" / "01_start_here.ipynb").exists()
     assert not (site / "files" / "source").exists(), "the assignment's source (its answers) must not ship"
+    wheels = list(site.rglob("dhlab-*.whl"))
+    assert wheels, "the site has no dhlab wheel"
+    for wheel in wheels:                 # the solutions notebook is package data: not on a public site
+        with zipfile.ZipFile(wheel) as archive:
+            leaked = [n for n in archive.namelist() if n.startswith("dhlab/grading/data/")]
+        assert not leaked, f"{wheel.name} ships the assignment's solutions: {leaked}"
