@@ -11,6 +11,14 @@ from dhlab.grading import variants as V
 SECRET = b"0123456789abcdef-the-teacher-secret"
 
 
+@pytest.fixture(autouse=True)
+def _the_puma_again():
+    """A test that runs a notebook's "Your robot" cell (use_variant) leaves the PUMA in place after it."""
+    from dhlab.course.family_notebook import clear_variant
+    yield
+    clear_variant()
+
+
 @pytest.fixture
 def class_folder(tmp_path):
     roster = tmp_path / "roster.csv"

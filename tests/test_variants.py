@@ -17,6 +17,14 @@ SEEDS = range(6)
 CASES = [(key, seed) for key in family_names() for seed in SEEDS]
 
 
+@pytest.fixture(autouse=True)
+def _the_puma_again():
+    """A test that runs a notebook's "Your robot" cell (use_variant) leaves the PUMA in place after it."""
+    from dhlab.course.family_notebook import clear_variant
+    yield
+    clear_variant()
+
+
 def test_same_seed_same_variant_and_exact_json():
     for key in family_names():
         v = V.variant(key, "s")
@@ -223,11 +231,18 @@ def test_load_secret(tmp_path):
 
 
 def test_use_variant_is_the_seam():
-    from dhlab.course.family_notebook import active_robot, use_variant
+    from dhlab.course.assignment import current_robot
+    from dhlab.course.family_notebook import active_robot, clear_variant, use_variant
+    from dhlab.grading import puma
     v = V.variant("cobra600", 2)
-    robot = use_variant(v.to_dict(), student_id="ana")
-    assert active_robot() is robot and robot.n == 4 and V.fingerprint(robot) == V.fingerprint(v)
-    assert math.isclose(float(np.linalg.norm(robot.axes[2].direction)), 1.0)
+    try:
+        robot = use_variant(v.to_dict(), student_id="ana")
+        assert active_robot() is robot and robot.n == 4 and V.fingerprint(robot) == V.fingerprint(v)
+        assert current_robot() is robot
+        assert math.isclose(float(np.linalg.norm(robot.axes[2].direction)), 1.0)
+    finally:
+        clear_variant()
+    assert active_robot() is None and current_robot() is puma.reference()
 
 
 @pytest.mark.parametrize("key", family_names())
@@ -307,3 +322,28 @@ def test_a_classmates_solution_does_not_pass_and_a_slip_costs(key):
     t2 = ns["T2"]
     ns["T2"] = t2.z @ Tx(t2.x.alpha + 90, t2.x.a)    # one slip: α2 off by 90°
     assert 8 < _grade(ns, mine) < 10
+
+
+@pytest.mark.parametrize("key", ["kr5", "ur5"])
+def test_the_notebooks_own_checks_tables_and_figures_use_the_students_robot(key):
+    """After the "Your robot" cell (use_variant), the notebook's check_part, tables, figures and
+    teach panel are about that robot: its n, its axes, its name."""
+    from dhlab.course import assignment as A
+    from dhlab.course.family_notebook import use_variant
+    v = V.variant(key, 5)
+    robot = use_variant(v.to_dict(), student_id="ana")
+    ns = _student_namespace(robot, robot.home_frames)
+    assert [A.check_part(p, ns).score for p in (1, 2, 3)] == [2, 3, 5]
+    assert f"move like the {robot.name}" in A.check_part3(ns).text()
+    assert repr(A.axes_table()) == repr(robot.axes_table()) and "G4" in repr(A.points_table())
+    wrong = dict(ns, T2=ns["T3"])
+    wrong["chain"] = wrong["T1"] @ wrong["T2"] @ ns["T3"] @ ns["T4"] @ ns["T5"] @ ns["T6"]
+    assert A.check_part3(wrong).score < 5
+    assert A.robot_of(ns).name == f"your {robot.name}"
+    np.testing.assert_allclose(A.robot_of(ns).fk(np.zeros(robot.n))[:3, 3], robot.end_point, atol=1e-9)
+    figure = A.my_robot_figure(ns)
+    assert not isinstance(figure, A.Note) and robot.name in figure.legends[0].texts[0].get_text()
+    assert isinstance(A.my_robot_figure({}), A.Note) and "T1" in A.my_robot_figure({}).text
+    panel = A.teach(ns)
+    assert len(panel.sliders) == robot.n
+    assert A.puma_figure().axes                           # the robot's own picture

@@ -139,6 +139,12 @@ class AssignmentRobot:
         """The PUMA's name for :attr:`end_point` (frame n's origin)."""
         return self.end_point
 
+    @property
+    def end_text(self) -> str:
+        """How the feedback names frame n's origin: the end point of the axes table."""
+        from .family_views import _end_name
+        return f"the end point {_end_name(self)} of the axes table"
+
     def frames(self, Q) -> np.ndarray:
         """The reference solution's frames 0…n at configurations Q (N, n)."""
         return dh_frames(self.rows, self.kinds, Q)

@@ -21,14 +21,15 @@ import re
 from ..grading import variants as V
 from .family_model import AssignmentRobot
 
-__all__ = ["SEAM_CELL_ID", "use_variant", "active_robot", "seam_source", "release_notebook", "prepare_submission"]
+__all__ = ["SEAM_CELL_ID", "use_variant", "active_robot", "clear_variant", "seam_source", "release_notebook",
+           "prepare_submission"]
 
 SEAM_CELL_ID = "dhlab-your-robot"
 
 
 # --- the seam: the notebook's robot ------------------------------------------------------------------
 
-_ACTIVE = {"robot": None, "variant": None}
+_ACTIVE = {"robot": None, "variant": None, "student_id": None}
 
 
 def use_variant(data, student_id: str | None = None) -> AssignmentRobot:
@@ -44,6 +45,11 @@ def use_variant(data, student_id: str | None = None) -> AssignmentRobot:
 def active_robot():
     """The robot set by :func:`use_variant`, or None (then the assignment is the PUMA 560)."""
     return _ACTIVE["robot"]
+
+
+def clear_variant() -> None:
+    """Back to the PUMA 560: no student's robot is the assignment's any more."""
+    _ACTIVE.update(robot=None, variant=None, student_id=None)
 
 
 # --- the notebook, for one student -------------------------------------------------------------------
@@ -220,7 +226,7 @@ def _png(fig) -> bytes:
 def release_notebook(template: dict, record: dict, figures: bool = True) -> tuple:
     """The student's notebook (a dict, nbformat 4) from the template and the signed record.
     Returns (notebook, notes): notes name the template cells that could not be adapted."""
-    robot = use_variant(record["variant"], student_id=record["student_id"])
+    robot = V.robot_of_variant(V.Variant.from_dict(record["variant"]))     # the teacher's process keeps no robot
     nb = copy.deepcopy(template)
     cells, notes = nb["cells"], []
     setup = _find(cells, "setup")

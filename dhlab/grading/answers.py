@@ -1,6 +1,9 @@
 """What a submission's answers are, as plain data, and how they are read.
 
-The answer cells of the PUMA notebook assign well-known names (``ANSWER_NAMES``).
+The answer cells of the assignment notebook assign well-known names (``ANSWER_NAMES``):
+``T1`` … ``Tn`` for a robot of n joints (the PUMA 560 has six; a student's variant,
+:mod:`dhlab.grading.variants`, may have four). The readers that depend on n take it as
+a parameter (:func:`parse_answers`), so a message names the right ``Tn``.
 After a submission has run, the grader's runner asks the student's kernel to turn
 the values of those names into JSON with :func:`to_plain` (its source is sent into
 the kernel, so nothing the notebook did to ``dhlab`` changes how it works), and
@@ -23,12 +26,13 @@ import math
 import re
 from dataclasses import dataclass, field
 
-__all__ = ["ANSWER_NAMES", "N_JOINTS", "NOT_ANSWERED", "Unreadable", "Answers", "Row", "Term",
+__all__ = ["ANSWER_NAMES", "N_JOINTS", "MAX_JOINTS", "NOT_ANSWERED", "Unreadable", "Answers", "Row", "Term",
            "to_plain", "encode_json", "parse_answers", "parse_json", "answers_from_namespace", "MAX_JSON_BYTES"]
 
-N_JOINTS = 6
+N_JOINTS = 6              # the PUMA 560's: the default when the robot is not said
+MAX_JOINTS = 12           # T1 … T12 are read; no robot of the course has more joints
 ANSWER_NAMES = ("n_links", "n_joints", "joint_types", "x_cases", "link_points",
-                *(f"T{i}" for i in range(1, N_JOINTS + 1)), "chain")
+                *(f"T{i}" for i in range(1, MAX_JOINTS + 1)), "chain")
 MAX_JSON_BYTES = 1_000_000
 MAX_NUMBER = 1e6          # metres or degrees: anything bigger is a slip, and would overflow the checks
 
@@ -237,9 +241,10 @@ def encode_json(value) -> str:
     return "null"
 
 
-def answers_from_namespace(namespace) -> Answers:
+def answers_from_namespace(namespace, n: int = N_JOINTS) -> Answers:
     """The answers in a namespace (the notebook's globals), read exactly as the grader reads
-    them: :func:`to_plain`, then :func:`encode_json`, then :func:`parse_json`."""
+    them: :func:`to_plain`, then :func:`encode_json`, then :func:`parse_json` (for a robot
+    of ``n`` joints)."""
     raw = {}
     for name in ANSWER_NAMES:
         if name in namespace:
@@ -247,12 +252,12 @@ def answers_from_namespace(namespace) -> Answers:
                 raw[name] = to_plain(namespace[name])
             except BaseException as e:          # the same as the runner's writer
                 raw[name] = {"__type__": "unreadable", "repr": (type(e).__name__ + ": " + str(e))[:200]}
-    return parse_json(encode_json(raw))
+    return parse_json(encode_json(raw), n)
 
 
 # --- in the grader: JSON -> Answers ----------------------------------------------------
 
-def parse_json(text: str) -> Answers:
+def parse_json(text: str, n: int = N_JOINTS) -> Answers:
     """:func:`parse_answers` of a JSON text, refusing texts that are too big or not JSON."""
     if len(text) > MAX_JSON_BYTES:
         raise ValueError(f"the answers are {len(text)} bytes of JSON, more than {MAX_JSON_BYTES}")
@@ -262,17 +267,22 @@ def parse_json(text: str) -> Answers:
         raise ValueError(f"the answers are not valid JSON ({str(e)[:80]})") from None
     if not isinstance(raw, dict):
         raise ValueError("the answers are not a JSON object")
-    return parse_answers(raw)
+    return parse_answers(raw, n)
 
 
-def parse_answers(raw: dict) -> Answers:
-    """Read each answer from plain data; what cannot be read becomes :class:`Unreadable`."""
+def parse_answers(raw: dict, n: int = N_JOINTS) -> Answers:
+    """Read each answer from plain data, for a robot of ``n`` joints (T1 … Tn, and any
+    T_i beyond that the notebook defines); what cannot be read becomes :class:`Unreadable`."""
+    if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= MAX_JOINTS:
+        raise ValueError(f"a robot of the assignment has 1 to {MAX_JOINTS} joints, not {n!r}")
     out = Answers()
     readers = {"n_links": _count, "n_joints": _count, "joint_types": _joint_types,
-               "x_cases": _x_cases, "link_points": _link_points, "chain": _chain}
+               "x_cases": lambda v: _x_cases(v, n), "link_points": lambda v: _link_points(v, n),
+               "chain": lambda v: _chain(v, n)}
     for name, reader in readers.items():
         setattr(out, name, _read(raw, name, reader))
-    out.T = [_read(raw, f"T{i}", _row) for i in range(1, N_JOINTS + 1)]
+    given = [i for i in range(1, MAX_JOINTS + 1) if raw.get(f"T{i}") is not None]
+    out.T = [_read(raw, f"T{i}", _row) for i in range(1, max([n, *given]) + 1)]
     return out
 
 
@@ -398,14 +408,14 @@ def _case(item):
     return _CASE_WORDS[key]
 
 
-def _x_cases(value) -> list:
+def _x_cases(value, n: int) -> list:
     items = _dict_items(value)
     if items is not None:                                       # {1: "intersect", ...}
         pairs = {}
         for k, v in items:
             digits = re.sub(r"\D", "", k) if isinstance(k, str) else k
             if digits == "" or isinstance(digits, bool) or not isinstance(digits, (int, str)):
-                raise _Bad(f"the keys of x_cases must be the numbers i = 1…{N_JOINTS - 1}, got {_show(k)}")
+                raise _Bad(f"the keys of x_cases must be the numbers i = 1…{n - 1}, got {_show(k)}")
             pairs[_count(int(digits))] = v
         value = [pairs.get(i) for i in range(1, max(pairs) + 1)] if pairs else []
     if isinstance(value, str):
@@ -425,8 +435,9 @@ def _point(value, where: str) -> tuple:
     return tuple(_number(v, where) for v in value)
 
 
-def _link_points(value) -> list:
-    """Links 0…n, each a list of points, from a list or a {link: points} dict."""
+def _link_points(value, n: int) -> list:
+    """Links 0…n, each a list of points, from a list or a {link: points} dict (as many links
+    as the answer names: a missing link is for the checks to say)."""
     items = _dict_items(value)
     if items is not None:
         pairs = {}
@@ -434,11 +445,11 @@ def _link_points(value) -> list:
             if isinstance(k, str) and re.fullmatch(r"\D*\d+\s*", k):      # 3, "3", "link3"
                 k = int(re.sub(r"\D", "", k))
             if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k <= 50:
-                raise _Bad(f"the keys must be link numbers 0…{N_JOINTS}, got {_show(k)}")
+                raise _Bad(f"the keys must be link numbers 0…{n}, got {_show(k)}")
             pairs[k] = v
-        value = [pairs.get(k) for k in range(max(max(pairs) + 1, N_JOINTS + 1))] if pairs else []
+        value = [pairs.get(k) for k in range(max(pairs) + 1)] if pairs else []
     if not isinstance(value, list):
-        raise _Bad(f"give the points of links 0…{N_JOINTS}, got {_show(value)}")
+        raise _Bad(f"give the points of links 0…{n}, got {_show(value)}")
     out = []
     for k, pts in enumerate(value):
         if _is_ellipsis_only(pts):
@@ -483,11 +494,11 @@ def _row(value) -> Row:
     return Row(theta, d, alpha.const, a.const)
 
 
-def _chain(value) -> list:
+def _chain(value, n: int) -> list:
     if _dhlab(value, "DHTransform"):
         return [_row(value)]
     if not _dhlab(value, "DHChain") or not isinstance(value.get("transforms"), list):
-        raise _Bad(f"write it as T1 @ T2 @ ... @ T{N_JOINTS}, got {_show(value)}")
+        raise _Bad(f"write it as {' @ '.join(f'T{i}' for i in range(1, n + 1))}, got {_show(value)}")
     if not value["transforms"]:
         raise _Bad("the chain has no transformations")
     return [_row(v) for v in value["transforms"]]

@@ -1,4 +1,4 @@
-"""Fair checks of the PUMA assignment, with feedback that names the joint and the quantity.
+"""Fair checks of the DH assignment, with feedback that names the joint and the quantity.
 
 DH frames are not unique, so nothing here compares a table with one answer key.
 The checks compare what every valid answer shares (see :mod:`dhlab.grading.puma`):
@@ -16,7 +16,9 @@ The checks compare what every valid answer shares (see :mod:`dhlab.grading.puma`
   right, the whole chain is also compared with the robot at random configurations:
   every joint axis as a directed line and the end-effector position.
 
-The robot is a parameter (``ref``, default :func:`dhlab.grading.puma.reference`).
+The robot is a parameter (``ref``): the PUMA 560 of :func:`dhlab.grading.puma.reference`
+(the default), or a student's own robot, an
+:class:`~dhlab.course.family_model.AssignmentRobot` (:mod:`dhlab.grading.variants`).
 
 >>> from dhlab.grading.answers import parse_answers
 >>> report = check_all(parse_answers({}))
@@ -105,6 +107,8 @@ class PartResult:
 @dataclass
 class Report:
     parts: list
+    robot: str = "PUMA 560"        # the name of the robot the answers were checked against
+    n: int = 6                     # its number of joints
 
     @property
     def score(self) -> float:
@@ -118,7 +122,7 @@ class Report:
         return next(p for p in self.parts if p.key == key)
 
     def text(self) -> str:
-        blocks = [f"PUMA 560 assignment: {_num(self.score)}/{self.max_score} points"]
+        blocks = [f"{self.robot} assignment: {_num(self.score)}/{self.max_score} points"]
         blocks += [p.text() for p in self.parts]
         return "\n\n".join(blocks) + "\n"
 
@@ -157,7 +161,7 @@ def check_part1(answers: Answers, ref=None) -> PartResult:
           "count every link (eslabón), the fixed base too: it is link 0 (seed 000, paso 0)")
     count("n_joints", answers.n_joints, n,
           "count the joints (articulaciones) between the base and the gripper: each has its own axis in the picture")
-    kinds = ["R" if link.is_revolute else "P" for link in ref.robot.links]
+    kinds = list(ref.kinds)
     types = answers.joint_types
     if isinstance(types, list) and types != kinds:
         wrong = [f"joint {j + 1}" for j, k in enumerate(kinds) if j >= len(types) or types[j] != k]
@@ -312,7 +316,7 @@ def _frame_problem(ref, k: int, names, P, W) -> str:
     """The link has the right shape but no valid DH frame k puts it there: say why."""
     n = ref.n
     if k == 0:
-        return "link 0 is given in frame 0, the world frame at the shoulder: its points are the table's"
+        return "link 0 is given in frame 0, the world frame drawn in the figure: its points are the table's"
     G = _rigid_fit(P, W)
     if G is not None and np.linalg.norm(P @ G[:3, :3].T + G[:3, 3] - W, axis=1).max() > puma.TOL_POS:
         return ("your coordinates are a mirror image of the link: is your frame right-handed "
@@ -328,9 +332,9 @@ def _frame_problem(ref, k: int, names, P, W) -> str:
             return (f"in its own DH frame the axis of joint {joint} must be the z axis (z{k}: "
                     f"seed 000, figures 11–12); in your model it lies {where}")
         if k == n:
-            miss = float(np.linalg.norm(o - ref.wrist_centre))
-            return (f"frame {n}'s origin is the wrist centre W (the end effector); in your model the "
-                    f"origin is {miss:.4f} m from W")
+            miss = float(np.linalg.norm(o - ref.end_point))
+            return (f"frame {n}'s origin (the end effector's) is {ref.end_text}; in your model the "
+                    f"origin is {miss:.4f} m from it")
         off = axis.distance_to_point(o)
         if off > puma.TOL_POS:
             return (f"z{k} runs along the axis of joint {k + 1}, but your frame's origin is {off:.4f} m off "
@@ -365,4 +369,5 @@ def check_all(answers: Answers, ref=None) -> Report:
     reference robot ``ref`` (default: the PUMA 560)."""
     analysis = analyse(answers, ref)
     ref = analysis.ref
-    return Report([check_part1(answers, ref), check_part2(answers, analysis, ref), check_part3(answers, analysis)])
+    parts = [check_part1(answers, ref), check_part2(answers, analysis, ref), check_part3(answers, analysis)]
+    return Report(parts, ref.name, ref.n)

@@ -149,5 +149,6 @@ def feedback_text(submission: str, run: dict, report, status: str) -> str:
     if details:
         lines += ["How your notebook ran:", *[f"  - {d}" for d in details], ""]
     lines.append("Your answers were read from the variables n_links, n_joints, joint_types, x_cases, "
-                 "link_points, T1…T6 and chain after your notebook ran, and checked by the grader.")
+                 f"link_points, T1…T{report.n} and chain after your notebook ran, and checked by the grader "
+                 f"against {'your ' + report.robot if report.robot != 'PUMA 560' else 'the PUMA 560'}.")
     return "\n".join(lines) + "\n"

@@ -37,6 +37,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..course.family_model import dh_frames
 from . import puma
 from .answers import NOT_ANSWERED, Answers, Row
 
@@ -74,10 +75,14 @@ class Analysis:
 
 
 def rows_of(answers: Answers, n: int | None = None) -> list:
-    """T_1…T_n: the T_i variable, or the chain's i-th factor when T_i is missing."""
+    """T_1…T_n: the T_i variable, or the chain's i-th factor when T_i is missing
+    (``NOT_ANSWERED`` when neither is there)."""
     rows = []
     chain = answers.chain if isinstance(answers.chain, list) else []
-    for i, value in enumerate(answers.T[:n] if n else answers.T):
+    given = list(answers.T)
+    n = len(given) if n is None else n
+    for i in range(n):
+        value = given[i] if i < len(given) else NOT_ANSWERED
         if not isinstance(value, Row) and i < len(chain):
             value = chain[i]
         rows.append(value)
@@ -296,10 +301,9 @@ def diagnose(ref, i: int, V, F, row: Row) -> str:
         if abs(float(z @ target.direction)) < math.cos(math.radians(puma.TOL_DEG)):
             return (f"z{n} should lie along z{n - 1} (the axis of joint {n}: the last frame's z is aligned "
                     f"with the previous one, seed 000 paso 0); your α{n} = {row.alpha:g}° turns it{alpha_hint}")
-        miss = float(np.linalg.norm(o - ref.wrist_centre))
-        return (f"end effector: frame {n}'s origin should be at the wrist centre W = {_vec(ref.wrist_centre)} m, "
-                f"where the axes of joints 4, 5 and 6 meet; yours is {miss:.4f} m away, at {_vec(o)}: "
-                f"check d{n} = {row.d.text()} and a{n} = {row.a:g}")
+        miss = float(np.linalg.norm(o - ref.end_point))
+        return (f"end effector: frame {n}'s origin should be at {ref.end_text}, {_vec(ref.end_point)} m; "
+                f"yours is {miss:.4f} m away, at {_vec(o)}: check d{n} = {row.d.text()} and a{n} = {row.a:g}")
     L_prev, L_next = ref.axes[i - 1], ref.axes[i]
     rel = puma.relation(L_prev, L_next)
     ang_st = math.degrees(math.acos(min(1.0, abs(float(z_prev @ z)))))
@@ -337,41 +341,54 @@ def diagnose(ref, i: int, V, F, row: Row) -> str:
 # --- the whole chain, moving -------------------------------------------------------------------
 
 def random_configurations(n: int = N_CONFIGS, seed: int = 560, ref=None) -> np.ndarray:
-    """The configurations the chain is compared at: home, then n random ones (radians)."""
+    """The configurations the chain is compared at: home, then n random ones (radians for a
+    revolute joint, anywhere in ±180°; metres for a prismatic one, within its stroke)."""
     ref = ref or puma.reference()
     rng = np.random.default_rng(seed)
     Q = rng.uniform(-math.pi, math.pi, (n, ref.n))
+    for j, kind in enumerate(ref.kinds):
+        if kind == "P":
+            Q[:, j] = rng.uniform(*ref.qlim[j], n)
     return np.vstack([np.zeros(ref.n), Q])
 
 
-def _student_rows_numeric(rows) -> list:
-    """(sign, joint index, θ0, d, a, α) in radians for :func:`puma.dh_frames`."""
-    return [(row.theta.sign, row.theta.joint - 1, math.radians(row.theta.const), row.d.const, row.a,
-             math.radians(row.alpha)) for row in rows]
+def _student_rows_numeric(rows) -> tuple:
+    """The student's rows as ``(sign, joint index, θ0, d0, a, α)`` (radians, metres) and their
+    kinds ('R' where q is in θ, 'P' where it is in d), for :func:`family_model.dh_frames`."""
+    out, kinds = [], ""
+    for row in rows:
+        joint, sign, where = row.joint
+        out.append((sign, joint - 1, math.radians(row.theta.const), row.d.const, row.a, math.radians(row.alpha)))
+        kinds += "P" if where == "d" else "R"
+    return out, kinds
 
 
 def chain_matches(rows, Q=None, ref=None) -> dict:
     """Compare a chain with the reference robot at configurations ``Q`` (default: home + 50 random).
 
     For each joint, whether its axis — a directed line: the axis of joint i is z_{i-1},
-    pointing the way that a positive q_i turns by the right-hand rule — is the robot's
-    at every configuration; whether the end effector is at the same place; and whether
+    pointing the way that a positive q_i turns by the right-hand rule (or slides) — is the
+    robot's at every configuration (a sliding joint's axis: its direction only, the line
+    is the student's choice); whether the end effector is at the same place; and whether
     the last frame's z lies along the last joint's axis.
     """
     ref = ref or puma.reference()
     Q = random_configurations(ref=ref) if Q is None else np.atleast_2d(Q)
-    F = puma.dh_frames(_student_rows_numeric(rows), Q)
+    numeric, kinds = _student_rows_numeric(rows)
+    F = dh_frames(numeric, kinds, Q)
     R = ref.frames(Q)
+    points, directions = ref.axes_at(Q)
     cos_tol = math.cos(math.radians(puma.TOL_DEG))
     axes_ok = []
     for k, row in enumerate(rows):
-        d_st = row.theta.sign * F[:, k, :3, 2]
+        d_st = row.joint[1] * F[:, k, :3, 2]
         p_st = F[:, k, :3, 3]
-        d_ref, p_ref = R[:, k, :3, 2], R[:, k, :3, 3]
+        d_ref, p_ref = directions[:, k], points[:, k]
         same_dir = np.einsum("ij,ij->i", d_st, d_ref) >= cos_tol
         v = p_ref - p_st
         off = np.linalg.norm(v - np.einsum("ij,ij->i", v, d_st)[:, None] * d_st, axis=1)
-        axes_ok.append(bool(np.all(same_dir & (off <= puma.TOL_POS))))
+        on_line = off <= puma.TOL_POS if ref.kinds[k] == "R" else True
+        axes_ok.append(bool(np.all(same_dir & on_line)))
     ee = np.linalg.norm(F[:, -1, :3, 3] - R[:, -1, :3, 3], axis=1)
     last_z = np.abs(np.einsum("ij,ij->i", F[:, -1, :3, 2], R[:, -1, :3, 2])) >= cos_tol
     return {"axes": axes_ok, "end_effector": bool(np.all(ee <= puma.TOL_POS)), "last_z": bool(np.all(last_z)),

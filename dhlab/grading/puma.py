@@ -88,6 +88,26 @@ class Reference:
     def n(self) -> int:
         return len(self.rows)
 
+    @property
+    def kinds(self) -> str:
+        """One letter per joint: the PUMA's six turn ('RRRRRR')."""
+        return "R" * self.n
+
+    @property
+    def qlim(self) -> list:
+        """Per joint (low, high) of q, radians: the PUMA's joint limits."""
+        return [tuple(float(v) for v in link.qlim) for link in self.robot.links]
+
+    @property
+    def end_point(self) -> np.ndarray:
+        """Frame n's origin at home (the name every assignment robot shares)."""
+        return self.wrist_centre
+
+    @property
+    def end_text(self) -> str:
+        """How the feedback names frame n's origin."""
+        return "the wrist centre W, where the axes of joints 4, 5 and 6 meet"
+
     def frames(self, Q) -> np.ndarray:
         return dh_frames(self.rows, Q)
 
