@@ -1,0 +1,140 @@
+"""Reading and checking the input of :func:`dhlab.assign.dh_assignment`: the joint axes,
+the end effector, the options, the tolerance and the joint limits — each refused with a
+:class:`~dhlab.DHLabError` that names the value, what was expected and how to fix it.
+
+Part of :mod:`dhlab.assign` (import from there).
+
+>>> _read_axes([((0, 0, 0), (0, 0, 2), "R")])[0][1].tolist()
+[0.0, 0.0, 1.0]
+>>> _read_axes([((0, 0, 0), (0, 0, 1), "r")])
+Traceback (most recent call last):
+...
+dhlab.validation.DHLabError: axes[0] (joint 1) kind must be 'R' or 'P', got 'r'. Write it in capitals: 'R'.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..validation import FULL_TURN, DHLabError, as_float_array, rigid_problem
+from .report import _vec
+
+__all__ = ["CASE1_RULES", "PARALLEL_RULES", "PRISMATIC_RULES"]
+
+CASE1_RULES = {"z_prev x z": +1, "z x z_prev": -1, "nearest": 0}
+PARALLEL_RULES = ("at_joint", "zero_d")
+PRISMATIC_RULES = ("given", "through_origin")
+
+
+def _read_axes(axes) -> list:
+    """[(point, unit direction, kind)] or a DHLabError naming the bad entry."""
+    example = "[((0, 0, 0), (0, 0, 1), 'R'), ((0, 0, 1), (0, 1, 0), 'P')]"
+    if isinstance(axes, (str, bytes)) or not hasattr(axes, "__len__") or len(axes) == 0:
+        raise DHLabError(f"axes must be a list with one (point, direction, kind) per joint, e.g. {example}; "
+                         f"got {_short(axes)}.")
+    lines = []
+    for j, entry in enumerate(axes):
+        where = f"axes[{j}] (joint {j + 1})"
+        if isinstance(entry, (str, bytes)) or not hasattr(entry, "__len__") or len(entry) != 3:
+            raise DHLabError(f"{where} must be (point, direction, kind), e.g. ((0, 0, 0), (0, 0, 1), 'R'); "
+                             f"got {_short(entry)}.")
+        point, direction, kind = entry
+        p = _vector3(point, f"{where} point")
+        u = _vector3(direction, f"{where} direction")
+        length = float(np.linalg.norm(u))
+        if length < 1e-12:
+            raise DHLabError(
+                f"{where} direction is {_vec(u)}: a joint axis needs a non-zero direction vector. "
+                f"Its sense is the positive sense of q{j + 1} (right-hand rule for 'R', sliding sense for 'P')."
+            )
+        if not isinstance(kind, str) or kind not in ("R", "P"):
+            hint = f" Write it in capitals: {kind.upper()!r}." if isinstance(kind, str) and kind in ("r", "p") \
+                else " 'R' is a revolute joint (it turns about the axis), 'P' a prismatic one (it slides along it)."
+            raise DHLabError(f"{where} kind must be 'R' or 'P', got {_short(kind)}.{hint}")
+        lines.append((p, u / length, kind))
+    return lines
+
+
+def _vector3(value, name: str) -> np.ndarray:
+    arr = as_float_array(value, name)
+    if arr.shape != (3,):
+        raise DHLabError(f"{name} must be 3 numbers (x, y, z), got shape {arr.shape}: {_short(value)}.")
+    if not np.isfinite(arr).all():
+        raise DHLabError(f"{name} is {arr.tolist()}: every coordinate must be a finite number.")
+    return arr
+
+
+def _read_tool(tool):
+    """(pose or None, point) from a 4x4 pose or a 3-point."""
+    if tool is None:
+        raise DHLabError(
+            "tool is missing: rule 9 puts frame n at the end effector, so give its pose (4x4) or its point "
+            "(x, y, z), in the same pose and world frame as the axes. If the end effector is on the last "
+            "joint's axis, a point on that axis will do, e.g. tool=axes[-1][0]."
+        )
+    arr = as_float_array(tool, "tool")
+    if arr.shape == (3,):
+        if not np.isfinite(arr).all():
+            raise DHLabError(f"tool is {arr.tolist()}: every coordinate must be a finite number.")
+        return None, arr
+    if arr.shape != (4, 4):
+        raise DHLabError(f"tool must be the end effector's pose (4x4) or point (x, y, z), got shape {arr.shape}.")
+    if not np.isfinite(arr).all():
+        raise DHLabError("tool has a value that is not a finite number (nan or inf): check the pose.")
+    problem = rigid_problem(arr)
+    if problem:
+        raise DHLabError(f"tool is not a proper rigid transform: {problem}.")
+    return arr, arr[:3, 3].copy()
+
+
+def _read_choice(value, allowed, name: str):
+    key = value.replace("×", "x") if isinstance(value, str) else value
+    if isinstance(key, str):
+        key = " ".join(key.split())
+    if key not in allowed:
+        options = ", ".join(repr(a) for a in allowed)
+        raise DHLabError(f"{name} must be one of {options}, got {_short(value)}.")
+    return allowed[key] if isinstance(allowed, dict) else key
+
+
+def _read_tol(tol) -> float:
+    try:
+        value = float(tol)
+    except (TypeError, ValueError):
+        value = float("nan")
+    if not (0 < value <= 1e-2):
+        raise DHLabError(f"tol must be a small positive number (relative tolerance, e.g. 1e-9; at most 1e-2), "
+                         f"got {_short(tol)}.")
+    return value
+
+
+def _read_qlim(qlim, kinds) -> list:
+    if qlim is None:
+        return [None] * len(kinds)
+    if not hasattr(qlim, "__len__") or len(qlim) != len(kinds):
+        raise DHLabError(f"qlim must give one (low, high) per joint ({len(kinds)}), got {_short(qlim)}.")
+    out = []
+    for j, (limits, kind) in enumerate(zip(qlim, kinds)):
+        arr = as_float_array(limits, f"qlim[{j}]")
+        if arr.shape != (2,) or not np.isfinite(arr).all() or not arr[0] < arr[1]:
+            raise DHLabError(f"qlim[{j}] (joint {j + 1}) must be (low, high) with low < high, got {_short(limits)}.")
+        if kind == "R" and np.abs(arr).max() > FULL_TURN + 1e-9:
+            raise DHLabError(
+                f"qlim[{j}] (joint {j + 1}, revolute) is {arr.tolist()}: more than one full turn. Limits are "
+                f"radians: for degrees write dhlab.deg({arr[0]:g}), dhlab.deg({arr[1]:g})."
+            )
+        out.append((float(arr[0]), float(arr[1])))
+    return out
+
+
+def _scale(points) -> float:
+    """The robot's size: the spread of the given points (not less than 1e-3 of their distance
+    from the world origin, which sets the rounding error of their coordinates)."""
+    P = np.array(points)
+    spread = float(np.linalg.norm(P - P[0], axis=1).max())
+    size = max(spread, 1e-3 * float(np.linalg.norm(P, axis=1).max()))
+    return size if size > 0 else 1.0
+
+
+def _short(x) -> str:
+    text = repr(x)
+    return text if len(text) <= 60 else text[:57] + "..."

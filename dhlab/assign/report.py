@@ -1,0 +1,153 @@
+"""The report of the DH frame placement (:func:`dhlab.assign.dh_assignment`): one
+:class:`FrameStep` per frame — the rule, the case and why, the choices, the DH row — and
+:class:`DHAssignment`, which prints them as text or shows them as a table in Jupyter.
+
+Part of :mod:`dhlab.assign` (import from there).
+
+>>> import dhlab
+>>> report = dhlab.dh_assignment([((0, 0, 0), (0, 0, 1), "R")], tool=(1, 0, 0))
+>>> print(report.steps[1].title)
+frame 1 (rule 9, end effector)
+>>> report.steps[1].row
+('q1', '0', '1', '0°')
+"""
+from __future__ import annotations
+
+import html
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..table import format_angle, format_length
+
+__all__ = ["FrameStep", "DHAssignment"]
+
+
+@dataclass
+class FrameStep:
+    """How frame ``i`` was placed: the rule, the case and why, the choices, the DH row.
+
+    ``case`` is 1 (z_{i−1}, z_i intersect), 2 (parallel; also when they are the same
+    line) or 3 (skew) for frames 1 … n−1, and None for frame 0 (rule 5) and frame n
+    (rule 9). ``relation`` names what the axes do: 'intersecting', 'parallel',
+    'coincident' or 'skew' (None for frame 0). ``origin``, ``x`` and ``z`` are the
+    frame's origin and axes in the world, at q = 0; ``row`` is the table row
+    (θ, d, a, α) as printed (None for frame 0).
+    """
+    i: int
+    rule: str
+    case: int | None
+    relation: str | None
+    why: str
+    origin_choice: str
+    x_choice: str
+    origin: np.ndarray
+    x: np.ndarray
+    z: np.ndarray
+    row: tuple | None = None
+    notes: list = field(default_factory=list)
+
+    @property
+    def title(self) -> str:
+        if self.i == 0:
+            return "frame 0 (rule 5)"
+        if self.case is None:
+            return f"frame {self.i} (rule 9, end effector)"
+        return f"frame {self.i}: case {self.case}"
+
+    def lines(self) -> list:
+        """The step as text lines (what ``print(report)`` shows for it)."""
+        out = [f"{self.title} — {self.why}",
+               f"    origin O{self.i} = {_vec(self.origin)}: {self.origin_choice}",
+               f"    x{self.i} = {_vec(self.x)}: {self.x_choice}"]
+        if self.row is not None:
+            theta, d, a, alpha = self.row
+            out.append(f"    row {self.i}: θ = {theta}, d = {d}, a = {a}, α = {alpha}")
+        out += [f"    note: {note}" for note in self.notes]
+        return out
+
+
+class DHAssignment:
+    """The report of :func:`dh_assignment`: one :class:`FrameStep` per frame 0 … n.
+
+    ``print(report)`` gives the text; in Jupyter it shows as a table. Attributes:
+    ``robot`` (the DHRobot built), ``steps``, ``frames`` (the DH frames in the world at
+    q = 0, (n+1, 4, 4)), ``tol`` (lengths below it count as zero), ``options`` (the
+    choices used), and ``check`` (the largest distance from a z_{i−1} to joint i's given
+    axis and the end-effector deviation, measured on the robot built).
+    """
+
+    def __init__(self, robot, steps, tol, scale, options, check):
+        self.robot = robot
+        self.steps = steps
+        self.tol = tol
+        self.scale = scale
+        self.options = options
+        self.check = check
+
+    @property
+    def frames(self) -> np.ndarray:
+        return self.robot.frames(self.robot.qz)
+
+    @property
+    def cases(self) -> list:
+        """The case (1, 2 or 3) of x1 … x_{n−1}, as in seed 000's Paso 2."""
+        return [step.case for step in self.steps[1:-1]]
+
+    def table(self):
+        """The DH table of the robot built (``robot.table()``)."""
+        return self.robot.table()
+
+    def _header(self) -> str:
+        kinds = " ".join("R" if link.is_revolute else "P" for link in self.robot.links)
+        return (f"DH frames of {self.robot.name!r}: {self.robot.n} joints ({kinds}); "
+                f"lengths below {self.tol:.2g} count as 0")
+
+    def _footer(self) -> str:
+        rounding = 1e-12 * self.scale                 # differences below this are rounding: shown as 0
+        axis_dev, tool_dev = (f"{v:.1g}" if v > rounding else "0" for v in self.check)
+        return (f"check at q = 0: every z_(i-1) lies on joint i's axis with its direction (off by {axis_dev}), "
+                f"the end effector is as given (off by {tool_dev}); rounding below {rounding:.1g} shows as 0")
+
+    def __str__(self) -> str:
+        lines = [self._header()]
+        for step in self.steps:
+            lines += step.lines()
+        lines.append(self._footer())
+        return "\n".join(lines)
+
+    def __repr__(self) -> str:
+        return str(self)
+
+    def _repr_html_(self) -> str:
+        head = "".join(f"<th>{h}</th>" for h in
+                       ("frame", "case", "why", "origin", "x", "θ", "d", "a", "α"))
+        body = []
+        for s in self.steps:
+            case = "rule 5" if s.i == 0 else ("rule 9" if s.case is None else str(s.case))
+            why = html.escape(s.why)
+            choice = html.escape(f"origin: {s.origin_choice}; x{s.i}: {s.x_choice}")
+            notes = "".join(f"<br><em>note: {html.escape(n)}</em>" for n in s.notes)
+            row = s.row or ("", "", "", "")
+            cells = [str(s.i), case, f"{why}<br><small>{choice}</small>{notes}",
+                     html.escape(_vec(s.origin)), html.escape(_vec(s.x))] + [html.escape(c) for c in row]
+            body.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
+        caption = html.escape(self._header())
+        foot = html.escape(self._footer())
+        return (f"<table><caption>{caption}</caption><thead><tr>{head}</tr></thead>"
+                f"<tbody>{''.join(body)}</tbody></table><p><small>{foot}</small></p>")
+
+
+# --------------------------------------------------------------------------------------
+# Numbers as the report writes them
+# --------------------------------------------------------------------------------------
+def _num(v: float) -> str:
+    return format_length(float(v))
+
+
+def _vec(v) -> str:
+    return "(" + ", ".join(_num(c) for c in np.asarray(v, dtype=float)) + ")"
+
+
+def _deg(angle: float) -> str:
+    return format_angle(angle)

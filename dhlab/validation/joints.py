@@ -1,0 +1,133 @@
+"""Checks of joint values at the boundary: one pose or a batch, radians for revolute
+joints (at most a full turn: more is degrees by mistake), lengths for prismatic ones
+(no ``deg()`` mark, at any depth), and each joint's limits.
+
+Part of :mod:`dhlab.validation` (import from there).
+
+>>> from dhlab import PrismaticDH, RevoluteDH
+>>> links = [RevoluteDH(), PrismaticDH()]
+>>> check_joint_values([deg(30), 0.2], links).round(4).tolist()
+[0.5236, 0.2]
+>>> check_joint_values([0.1, deg(30)], links)
+Traceback (most recent call last):
+...
+dhlab.validation.DHLabError: q[1] = deg(30) is an angle, but joint 2 is prismatic: give its displacement as a length (in the robot's unit).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..units import Angle, AngleArray, deg, has_angle_mark  # noqa: F401 (deg: for the doctest)
+from .arrays import _check_finite, as_float_array
+from .values import FULL_TURN, DHLabError, as_angle, as_number, describe
+
+__all__ = ["check_joint_values", "as_qlim"]
+
+
+# ------------------------------------------------------------------------------------------
+# Joint values
+# ------------------------------------------------------------------------------------------
+def check_joint_values(q, links, name: str = "q", single: bool = False) -> np.ndarray:
+    """Joint values as a float array of shape (n,) or (N, n), checked against the links.
+
+    Revolute values are radians; a value beyond one full turn is almost always
+    degrees typed by mistake, so it is refused with the fix (``dhlab.deg``).
+    A value made by ``deg()`` given to a prismatic joint (a length) is refused too,
+    wherever it sits (a list, a nested batch, a numpy array). ``single=True``
+    refuses a batch where one pose is expected. A batch may be empty, (0, n).
+    """
+    n = len(links)
+    prismatic = [j for j, link in enumerate(links) if link.is_prismatic]
+    if prismatic:
+        _check_angle_marks(q, n, prismatic, name)
+    arr = as_float_array(q, name)
+    plural = "s" if n != 1 else ""
+    if arr.ndim == 0 or arr.shape[-1] != n or arr.ndim > 2 or (single and arr.ndim != 1):
+        expected = f"shape ({n},)" + ("" if single else f", or (N, {n}) for a batch")
+        hint = (" This function takes one pose, not a batch: pass one row, e.g. q[0]."
+                if single and arr.ndim == 2 and arr.shape[-1] == n else "")
+        raise DHLabError(f"{name} must hold {n} joint value{plural} ({expected}), got shape {arr.shape}.{hint}")
+    _check_finite(arr, name)
+    if arr.size == 0:
+        return arr
+    revolute = [j for j in range(n) if j not in prismatic]
+    if revolute:
+        for j in revolute:
+            value = np.abs(arr[..., j]).max()      # column by column: faster than max(axis=0)
+            if value > FULL_TURN + 1e-9:
+                raise DHLabError(
+                    f"{name}[{j}] (joint {j + 1}, revolute) is {value:g} rad, more than a full turn: "
+                    f"angles are in radians. If you meant {value:g} degrees, pass dhlab.deg({value:g})."
+                )
+    for j in prismatic:
+        _check_not_radians(arr[..., j], j, name)
+    return arr
+
+
+def _angle_columns(q, n: int) -> set:
+    """The positions j (0 … n−1) whose value carries a deg() mark, at any depth of ``q``."""
+    if isinstance(q, AngleArray):
+        return set(range(n))
+    if isinstance(q, Angle):
+        return {0} if n == 1 else set()
+    if isinstance(q, (list, tuple)) or (isinstance(q, np.ndarray) and q.dtype == object):
+        items = list(q) if not isinstance(q, np.ndarray) or q.ndim else [q[()]]
+        if items and all(isinstance(v, (list, tuple, np.ndarray)) and np.ndim(v) > 0 for v in items):
+            return set().union(*(_angle_columns(v, n) for v in items))       # a batch: every row
+        return {j for j, v in enumerate(items) if j < n and has_angle_mark(v)}
+    return set()
+
+
+def _check_angle_marks(q, n: int, prismatic: list, name: str) -> None:
+    """Refuse deg() values given to prismatic joints."""
+    marked = _angle_columns(q, n) & set(prismatic)
+    if not marked:
+        return
+    j = min(marked)
+    if isinstance(q, AngleArray):
+        raise DHLabError(
+            f"{name} was made with dhlab.deg(), but joint {j + 1} is prismatic: its value is a length, "
+            "not an angle. Convert only the revolute values, e.g. [deg(30), 0.5, deg(45)]."
+        )
+    shown = f" = {q[j]!r}" if isinstance(q, (list, tuple)) and len(q) == n else ""
+    raise DHLabError(
+        f"{name}[{j}]{shown} is an angle, but joint {j + 1} is prismatic: "
+        "give its displacement as a length (in the robot's unit)."
+    )
+
+
+def _check_not_radians(column: np.ndarray, j: int, name: str) -> None:
+    """A prismatic value equal, to the last bit, to a whole number of degrees in radians
+    (deg(30) = 0.5235987755982988) is an angle whose deg() mark numpy dropped."""
+    degrees = np.round(column * (180 / math.pi))
+    hit = (degrees != 0) & (np.abs(degrees) <= 360) & (np.radians(degrees) == column)
+    if hit.any():
+        value = column[np.argmax(hit)] if column.ndim else column
+        raise DHLabError(
+            f"{name}[{j}] = {float(value)!r} is exactly deg({float(np.degrees(value)):g}), an angle, but joint "
+            f"{j + 1} is prismatic: give its displacement as a length (in the robot's unit)."
+        )
+
+
+# ------------------------------------------------------------------------------------------
+# Joint limits
+# ------------------------------------------------------------------------------------------
+def as_qlim(qlim, revolute: bool, name: str = "qlim") -> tuple:
+    """One joint's limits (low, high): finite, low < high; radians (at most a full turn
+    either way) for a revolute joint, lengths (no deg() mark) for a prismatic one."""
+    unit = "radians, e.g. (deg(-90), deg(90))" if revolute else "lengths, e.g. (0.0, 0.5)"
+    if isinstance(qlim, (str, bytes, dict, set)) or not hasattr(qlim, "__len__") or np.ndim(qlim) != 1 \
+            or len(qlim) != 2:
+        raise DHLabError(f"{name} must be two numbers (low, high) in {unit}; got {describe(qlim)}.")
+    if not revolute and has_angle_mark(qlim):
+        raise DHLabError(f"{name} of a prismatic joint is a range of lengths, but it was made with deg(): "
+                         f"give lengths, e.g. (0.0, 0.5); got {describe(qlim)}.")
+    low, high = (as_number(v, f"{name}[{k}]") for k, v in enumerate(qlim))
+    if not low < high:
+        raise DHLabError(f"{name} must be (low, high) with low < high, got {describe(qlim)}.")
+    if revolute:
+        for v in (low, high):
+            as_angle(v, f"{name} (a revolute joint's limit)")
+    return (low, high)

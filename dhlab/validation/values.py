@@ -1,0 +1,210 @@
+"""Checks of one value at the boundary: a number, an angle, a length, a tolerance, an
+index, an option — and :class:`DHLabError`, the one error they all raise.
+
+Numbers may be python, numpy or sympy; ``True``, ``None``, text, complex, dates and
+masked values are refused with the fix for their type. Part of :mod:`dhlab.validation`
+(import from there).
+
+>>> as_number(np.float32(0.5), "x")
+0.5
+>>> as_length(deg(30), "d")
+Traceback (most recent call last):
+...
+dhlab.validation.DHLabError: d is a length, but you gave an angle (deg(30)): pass a plain number.
+"""
+from __future__ import annotations
+
+import datetime
+import math
+import numbers
+from decimal import Decimal
+from fractions import Fraction
+
+import numpy as np
+import sympy as sp
+
+from ..units import Angle, deg, has_angle_mark  # noqa: F401 (deg: for the doctest)
+
+__all__ = ["DHLabError", "FULL_TURN", "describe", "as_number", "as_angle", "as_length", "as_tolerance",
+           "as_index", "as_choice", "as_flag", "as_text", "as_timeout"]
+
+FULL_TURN = 2 * math.pi
+_PLAIN = (float, int, Angle, np.float64, np.float32, np.int64, np.int32, np.int16, np.int8,
+          np.uint8, np.uint16, np.uint32, np.uint64, np.float16)
+
+
+class DHLabError(ValueError):
+    """Bad input to dhlab: the message says what was wrong and how to fix it."""
+
+
+DHLabError.__module__ = "dhlab.validation"   # where students meet it, and where it is imported from
+
+
+def describe(x) -> str:
+    """A short repr of ``x`` for an error message."""
+    try:
+        text = repr(x)
+    except Exception:               # a broken __repr__ must not hide the real message
+        text = f"<{type(x).__name__}>"
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+# ------------------------------------------------------------------------------------------
+# One number
+# ------------------------------------------------------------------------------------------
+def _not_a_number(x, name: str) -> DHLabError:
+    """The error for a value that is not a real number, with the fix for its type."""
+    if x is None:
+        why = "it is missing (None): give a number"
+    elif isinstance(x, (bool, np.bool_)):
+        why = "True/False is not a number here: give the number itself (e.g. 1.0 or 0.0)"
+    elif isinstance(x, (str, bytes)):
+        why = "it is text: write the number without quotes (e.g. 0.5, not '0.5')"
+    elif isinstance(x, (complex, np.complexfloating)) or (isinstance(x, sp.Basic) and x.is_number):
+        why = "it is a complex number: only real numbers make a pose (check for a sqrt or arcsin of a value out of range)"
+    elif isinstance(x, (datetime.date, datetime.time, datetime.timedelta, np.datetime64, np.timedelta64)):
+        why = "it is a date or a time, not a number"
+    elif isinstance(x, sp.Basic) and x.free_symbols:
+        why = (f"it has the symbols {sorted(map(str, x.free_symbols))}: here pass plain numbers "
+               "(symbols belong in the symbolic functions, e.g. robot.fk_sym(); substitute with .subs())")
+    elif x is np.ma.masked:
+        why = "it is a masked (missing) value: fill it in first"
+    else:
+        why = f"it is a {type(x).__name__}, not a number"
+    return DHLabError(f"{name} = {describe(x)} is not a valid number: {why}.")
+
+
+def _real(x, name: str, symbolic: bool = False):
+    """``x`` as a float; with ``symbolic`` a sympy value stays sympy (checked)."""
+    if isinstance(x, _PLAIN) and not isinstance(x, (bool, np.bool_)):
+        try:
+            return float(x)
+        except OverflowError:
+            raise DHLabError(f"{name} = {describe(x)} is too large to be a number of this course.") from None
+    if isinstance(x, np.ndarray) and x.ndim == 0 and not isinstance(x, np.ma.MaskedArray):
+        return _real(x[()], name, symbolic)
+    if isinstance(x, (Fraction, Decimal, np.floating, np.integer)) and not isinstance(x, np.bool_):
+        try:
+            return float(x)
+        except (OverflowError, ValueError):
+            raise DHLabError(f"{name} = {describe(x)} is too large to be a number of this course.") from None
+    if isinstance(x, sp.Basic):
+        return _sympy_real(x, name, symbolic)
+    raise _not_a_number(x, name)
+
+
+def _sympy_real(x, name: str, symbolic: bool):
+    if not isinstance(x, sp.Expr) or isinstance(x, sp.MatrixBase):
+        raise DHLabError(f"{name} = {describe(x)} is not a number or an expression (a {type(x).__name__}).")
+    if x.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise DHLabError(f"{name} = {describe(x)}: every value must be a finite number (no nan, oo or zoo).")
+    if x.free_symbols:
+        if not symbolic:
+            raise _not_a_number(x, name)
+        if x.has(sp.I) or x.is_extended_real is False:
+            raise DHLabError(f"{name} = {describe(x)} is not real: angles and lengths are real numbers.")
+        return x
+    try:
+        value = complex(x.evalf(30))
+    except (TypeError, ValueError, OverflowError, ArithmeticError):
+        raise _not_a_number(x, name) from None
+    if abs(value.imag) > 1e-12 * max(1.0, abs(value.real)):
+        raise _not_a_number(complex(value), name)
+    if not math.isfinite(value.real):
+        raise DHLabError(f"{name} = {describe(x)} is too large: every value must be a finite number.")
+    return x if symbolic else float(value.real)
+
+
+def _finite(value, name: str):
+    if isinstance(value, float) and not math.isfinite(value):
+        raise DHLabError(f"{name} is {value}: it must be a finite number.")
+    return value
+
+
+def as_number(x, name: str, *, symbolic: bool = False, finite: bool = True):
+    """One real number as a float (or, with ``symbolic``, a checked sympy expression).
+
+    >>> as_number(np.float32(0.5), "x")
+    0.5
+    """
+    value = _real(x, name, symbolic)
+    return _finite(value, name) if finite else value
+
+
+def _magnitude(value) -> float:
+    return abs(float(value)) if not isinstance(value, sp.Basic) or not value.free_symbols else 0.0
+
+
+def as_angle(x, name: str, *, symbolic: bool = False, turns: float = 1.0):
+    """An angle in radians: finite, at most ``turns`` full turns (more is degrees by mistake)."""
+    value = as_number(x, name, symbolic=symbolic)
+    size = _magnitude(value)
+    if size > turns * FULL_TURN + 1e-9:
+        shown = f"{float(value):g}"
+        raise DHLabError(
+            f"{name} = {shown} rad is more than {'a full turn' if turns == 1 else f'{turns:g} turns'}: "
+            f"angles are in radians. If you meant {shown} degrees, pass dhlab.deg({shown})."
+        )
+    return value
+
+
+def as_length(x, name: str, *, symbolic: bool = False):
+    """A finite length; a value made by ``deg()`` (an angle) is refused."""
+    if has_angle_mark(x):
+        raise DHLabError(f"{name} is a length, but you gave an angle ({describe(x)}): pass a plain number.")
+    return as_number(x, name, symbolic=symbolic)
+
+
+def as_tolerance(x, name: str = "tol", upper: float = 1e-2, zero: bool = False) -> float:
+    """A small positive number (``zero=True`` also allows 0), at most ``upper``."""
+    value = as_number(x, name)
+    if not (0 <= value if zero else 0 < value) or value > upper:
+        low = "≥ 0" if zero else "> 0"
+        raise DHLabError(f"{name} must be a small number {low} and at most {upper:g} (e.g. 1e-9), "
+                         f"got {describe(x)}.")
+    return value
+
+
+def as_index(x, name: str, lo: int, hi: int) -> int:
+    """A whole number in lo … hi (1.5, '1' and True are refused)."""
+    if isinstance(x, (bool, np.bool_)) or not isinstance(x, (numbers.Integral, np.integer, sp.Integer)):
+        raise DHLabError(f"{name} must be a whole number from {lo} to {hi}, got {describe(x)}.")
+    value = int(x)
+    if not lo <= value <= hi:
+        raise DHLabError(f"{name} must be from {lo} to {hi}, got {value}.")
+    return value
+
+
+# ------------------------------------------------------------------------------------------
+# Options
+# ------------------------------------------------------------------------------------------
+def as_choice(x, allowed, name: str):
+    """One of ``allowed`` (text options compared as typed)."""
+    if not isinstance(x, (str, type(None), bool, int)) or x not in tuple(allowed):
+        options = ", ".join(repr(a) for a in allowed)
+        raise DHLabError(f"{name} must be one of {options}, got {describe(x)}.")
+    return x
+
+
+def as_flag(x, name: str) -> bool:
+    """True or False (1/0 and numpy booleans too; text and None are refused)."""
+    if isinstance(x, (bool, np.bool_)) or (isinstance(x, int) and x in (0, 1)):
+        return bool(x)
+    raise DHLabError(f"{name} must be True or False, got {describe(x)}.")
+
+
+def as_text(x, name: str) -> str:
+    """A string (a name, a label)."""
+    if not isinstance(x, str):
+        raise DHLabError(f"{name} must be text (a str), got {describe(x)}.")
+    return x
+
+
+def as_timeout(x, name: str = "timeout") -> float | None:
+    """Seconds (a positive number), or None for no limit."""
+    if x is None:
+        return None
+    value = as_number(x, name)
+    if value <= 0:
+        raise DHLabError(f"{name} must be a positive number of seconds (or None for no limit), got {describe(x)}.")
+    return value
