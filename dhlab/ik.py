@@ -80,7 +80,7 @@ def pr_mechanism_ik(robot_or_params, x: float, y: float, tol: float = 1e-12) -> 
     if root <= tol * l2:
         return IKSolutions([a], f"one solution: |y| = l2, the two branches meet (q2 = {math.degrees(q2a):g}°).")
     b = np.array([x - l1 + root, math.pi - q2a])
-    return IKSolutions([a, b], "two solutions: branch A (elbow toward −x) and branch B (toward +x).")
+    return IKSolutions([a, b], "two solutions: branch A (arm pointing forward, +x) and B (arm pointing back, −x).")
 
 
 def pr_mechanism_ik_explained(robot_or_params, x: float, y: float) -> str:

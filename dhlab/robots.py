@@ -35,7 +35,7 @@ def robot_no_tan_elemental_1(l1: float = 0.70, l2: float = 0.30) -> Robot:
     return Robot([Link([Rot("z", joint=True), Move("y", L1)], name="link 1"),
                   Link([Rot("z", joint=True), Move("x", L2)], name="link 2")],
                  name="robot no tan elemental 1 (seed 004)", params={"l1": l1, "l2": l2},
-                 joint_symbols=("theta0", "theta1"))
+                 joint_symbols=("theta0", "theta1"), unit="m")
 
 
 def robot_no_tan_elemental_2(l: float = 0.70, d_max: float = 0.30) -> Robot:
@@ -47,12 +47,13 @@ def robot_no_tan_elemental_2(l: float = 0.70, d_max: float = 0.30) -> Robot:
     return Robot([Link([Rot("z", joint=True), Move("y", L)], name="link 1"),
                   Link([Move("y", joint=True)], name="link 2", qlim=(0.0, d_max))],
                  name="robot no tan elemental 2 (seed 004)", params={"l": l},
-                 joint_symbols=("theta", "d"))
+                 joint_symbols=("theta", "d"), unit="m")
 
 
 def pr_mechanism(l1: float = 1.0, l2: float = 0.5, q1_range=(0.0, 2.0)) -> Robot:
     """Seed 003's prismatic-rotational mechanism: x = q1 + l1 + l2·cos q2, y = l2·sin q2,
-    i.e. Tr(q1 + l1, 0, 0)·Rz(q2)·Tr(l2, 0, 0). l1 = 1, l2 = 0.5: verifier's choice."""
+    i.e. Tr(q1 + l1, 0, 0)·Rz(q2)·Tr(l2, 0, 0). l1 = 1, l2 = 0.5: verifier's choice
+    (the seed gives no unit, so none is shown)."""
     return Robot([Link([Move("x", L1, joint=True)], name="slider", qlim=q1_range),
                   Link([Rot("z", joint=True), Move("x", L2)], name="arm")],
                  name="P-R mechanism (seed 003)", params={"l1": l1, "l2": l2})

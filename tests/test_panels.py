@@ -191,3 +191,106 @@ def test_stepthrough_starts_at_0_and_reads_steps_without_moving():
     for step in (1, 2, 3, 4):
         np.testing.assert_allclose(panel.frame_at(step), dh_partial(np.pi / 2, 1.0, 0.5, -np.pi / 2, step))
     assert panel.slider.value == 0
+
+
+class FakeBrowser:
+    """What JupyterLab does with a panel's sliders, messages included.
+
+    A slider view rounds every value the kernel sends to its step and, when that
+    changed it, sends the rounded value back (so does a new view); while one of its
+    own messages is unanswered it ignores the kernel's updates (ipywidgets' echo
+    rule). Messages to the kernel wait in ``outbox`` until :meth:`deliver`: during
+    Run All the kernel is busy with the next cells and reads them afterwards."""
+
+    def __init__(self, sliders):
+        self.sliders = list(sliders)
+        self.shown, self.pending, self.outbox = {}, {}, []
+        self.delivering = None
+        self.sent = 0
+        for slider in self.sliders:
+            self.pending[id(slider)] = 0
+            slider.observe(self._from_kernel, names="value")
+            self._show(slider, slider.value)            # the view is made: it may round, and send
+
+    @staticmethod
+    def rounded(slider, value):
+        return float(np.clip(slider.min + round((value - slider.min) / slider.step) * slider.step,
+                             slider.min, slider.max))
+
+    def _show(self, slider, value):
+        shown = self.rounded(slider, value)
+        self.shown[id(slider)] = shown
+        if shown != value:
+            self.outbox.append((slider, shown))
+            self.pending[id(slider)] += 1
+            self.sent += 1
+
+    def _from_kernel(self, change):
+        slider = change["owner"]
+        if self.delivering == (id(slider), change["new"]):
+            self.delivering = None                       # the kernel taking our own message
+            return
+        if self.pending[id(slider)]:
+            return                                       # ignored until our message's echo
+        self._show(slider, change["new"])
+
+    def drag(self, slider, value):
+        """The student moves a slider (its view shows and sends the value)."""
+        self.shown[id(slider)] = value
+        self.outbox.append((slider, value))
+        self.pending[id(slider)] += 1
+        self.sent += 1
+
+    def deliver(self, limit=200):
+        """The kernel reads the messages (each answered by its echo first), and the
+        browser answers the kernel's updates, until nothing is left to send."""
+        while self.outbox:
+            assert self.sent <= limit, f"more than {limit} messages: the panel and the browser never settle"
+            slider, value = self.outbox.pop(0)
+            self.pending[id(slider)] -= 1                # echo_update: the browser shows `value`
+            self.shown[id(slider)] = value
+            self.delivering = (id(slider), value)
+            slider.value = value
+            self.delivering = None
+
+
+def test_run_all_with_late_echoes_settles_where_the_code_left_it(pr_panel):
+    """Notebook 04 under Run All: the panel is shown at branch A of (2, 0.25), then the next
+    cell moves it twice, before the browser's roundings of the first values reach the kernel.
+    In a browser the late echoes moved the robot back, set the other sliders, whose echoes
+    moved it again: hundreds of messages, and the panel never showed what the code set."""
+    browser = FakeBrowser([*pr_panel.sliders, *pr_panel.target_sliders])
+    pr_panel.set_target(2.0, 0.25)
+    start = pr_panel.q
+    for target in [(2.0, -0.4), (2.0, 0.6)]:
+        pr_panel.set_target(*target)
+    browser.deliver()
+    assert browser.sent < 20
+    np.testing.assert_allclose(pr_panel.q, [0.7, np.arctan2(-0.4, 0.3)], atol=1e-9)   # where (2, -0.4) put it
+    assert not np.allclose(pr_panel.q, start)
+    assert pr_panel.target == (2.0, 0.6) and "no solution" in pr_panel.message.value
+    # what the browser shows is what the panel holds (to the slider's step)
+    for slider, value in zip(pr_panel.sliders, [0.7, np.degrees(np.arctan2(-0.4, 0.3))]):
+        assert abs(browser.shown[id(slider)] - value) <= slider.step / 2 + 1e-9
+    for slider, value in zip(pr_panel.target_sliders, (2.0, 0.6)):
+        assert abs(browser.shown[id(slider)] - value) <= slider.step / 2 + 1e-9
+
+
+def test_dragging_a_joint_with_a_real_browser_never_moves_the_other_joint(pr_panel):
+    """The student drags q1 from 0.57 down to 0 at branch A, key by key; the browser's
+    roundings of the target sliders come back after each move."""
+    browser = FakeBrowser([*pr_panel.sliders, *pr_panel.target_sliders])
+    browser.drag(pr_panel.sliders[1], 30.0)
+    browser.deliver()
+    q1_slider, q2_slider = pr_panel.sliders
+    for q1 in np.arange(0.57, -0.001, -0.03):
+        browser.drag(q1_slider, float(browser.rounded(q1_slider, q1)))
+        browser.deliver(limit=10_000)
+        assert q2_slider.value == 30 and np.degrees(pr_panel.q[1]) == pytest.approx(30)
+        assert browser.shown[id(q2_slider)] == 30
+    assert pr_panel.branch == "A" and pr_panel.q[0] == pytest.approx(0.0)
+    # then the target: the robot follows on branch A, the joint sliders show where it is
+    browser.drag(pr_panel.target_sliders[1], 0.4)
+    browser.deliver(limit=10_000)
+    assert pr_panel.branch == "A" and np.sin(pr_panel.q[1]) == pytest.approx(0.8)
+    assert abs(browser.shown[id(q2_slider)] - np.degrees(pr_panel.q[1])) <= q2_slider.step / 2 + 1e-9

@@ -27,7 +27,7 @@ from .livefigure import LiveFigure, forget_previous_run
 from .view import one_pose
 
 __all__ = ["Panel", "joint_sliders", "slider_to_q", "q_to_slider", "unit_of", "checked_start",
-           "view_controls"]
+           "view_controls", "SliderEchoes"]
 
 REVOLUTE_STEP_DEG = 0.5
 PRISMATIC_STEPS = 1000         # a prismatic slider's range is cut into this many steps
@@ -126,8 +126,73 @@ def view_controls(view, run=None) -> list:
     return rows
 
 
+class SliderEchoes:
+    """Tells a student's slider move from the browser's echo of a value the panel set.
+
+    When the kernel sets a slider to a value between two of its steps, the browser
+    rounds it to a step and sends the rounded value back. That echo may arrive late:
+    during Run All, after a later cell has moved the panel again. A panel whose
+    sliders are coupled (the joints and the target of :func:`~dhlab.views.spaces.spaces`)
+    that took a late echo for a student's move would move the robot back, set the
+    other sliders, get *their* echoes, and so on: the panel drifted on its own.
+
+    :meth:`set` sets a slider and remembers the value; :meth:`classify` says what a
+    new value of the slider is: ``"echo"`` (the browser's rounding of the value the
+    panel set last: nothing to do), ``"late"`` (the rounding of an older value: the
+    panel's own value is sent again, so the browser shows it) or ``"student"``.
+
+    >>> import ipywidgets as widgets
+    >>> slider, echoes = widgets.FloatSlider(min=0, max=1, step=0.01), SliderEchoes()
+    >>> echoes.set(slider, 0.3333); echoes.set(slider, 0.5)
+    >>> slider.value = 0.33                   # the browser's rounding of 0.3333, after 0.5 was set
+    >>> echoes.classify(slider), slider.value
+    ('late', 0.5)
+    >>> slider.value = 0.8
+    >>> echoes.classify(slider)
+    'student'
+    """
+
+    def __init__(self):
+        self._expected = {}          # id(slider) -> values the panel set, oldest first
+        self.setting = False         # True while the panel sets a slider (its observers ignore it)
+
+    def set(self, slider, value) -> None:
+        """Set ``slider`` to ``value`` (clipped to its range) as the panel, not the student."""
+        value = float(np.clip(value, slider.min, slider.max))
+        if value == slider.value:
+            return                                    # no message to the browser, no echo
+        expected = self._expected.setdefault(id(slider), [])
+        if not expected or expected[-1] != value:
+            expected.append(value)
+        del expected[:-8]                             # echoes older than 8 settings never come
+        self.setting = True
+        try:
+            slider.value = value
+        finally:
+            self.setting = False
+
+    def expect(self, slider) -> None:
+        """The slider's current value was set by the panel (e.g. when it was made)."""
+        self._expected[id(slider)] = [float(slider.value)]
+
+    def classify(self, slider) -> str:
+        value, expected = float(slider.value), self._expected.get(id(slider), [])
+        half_step = float(slider.step) / 2 * (1 + 1e-9) + 1e-12
+        for k, mine in enumerate(expected):
+            if abs(value - mine) <= half_step:
+                current = expected[-1]
+                del expected[:k + 1]                  # this echo, and the older ones, will not come
+                if not expected:                      # it was the last value set: a plain echo
+                    return "echo"
+                self.set(slider, current)             # a late echo: show the panel's value again
+                return "late"
+        expected.clear()
+        return "student"
+
+
 class Panel(widgets.HBox):
-    """A figure on the left, controls on the right; the base of the course's panels.
+    """A figure on the left, controls on the right (or under it: ``below=True``);
+    the base of the course's panels.
 
     ``run(action, *args)`` calls ``action`` and, if it raises, shows the error
     in red under the controls (and keeps it in ``panel.error``) before raising
@@ -135,15 +200,18 @@ class Panel(widgets.HBox):
     log, where nobody sees it.
     """
 
-    def __init__(self, live: LiveFigure, controls: list):
+    def __init__(self, live: LiveFigure, controls: list, *, below: bool = False):
         self.live = live
         self.figure = live.figure
         self.error = None
         self.error_box = widgets.HTML(layout=widgets.Layout(max_width="520px"))
+        # beside the figure (wrapped under it in a narrow column), or always under it (``below``:
+        # a wide figure, e.g. two subplots side by side)
         side = widgets.VBox([*controls, self.error_box],
-                            layout=widgets.Layout(margin="0 0 0 1em"))
+                            layout=widgets.Layout(margin="0.5em 0 0 0" if below else "0 0 0 1em"))
         super().__init__([live.widget, side],
-                         layout=widgets.Layout(flex_flow="row wrap", align_items="flex-start"))
+                         layout=widgets.Layout(flex_flow="column" if below else "row wrap",
+                                               align_items="flex-start"))
         forget_previous_run(self)
 
     def run(self, action, *args):

@@ -36,15 +36,20 @@ import html
 import ipywidgets as widgets
 import numpy as np
 from matplotlib.patches import Rectangle
+from matplotlib.ticker import MultipleLocator
 from matplotlib.transforms import offset_copy
 
 from ..validation import DHLabError, as_choice
 from .livefigure import LiveFigure
-from .panel import Panel, checked_start, joint_sliders, q_to_slider, slider_to_q, unit_of
+from .panel import Panel, SliderEchoes, checked_start, joint_sliders, q_to_slider, unit_of
 from .view import checked_robot, default_q, robot_view
 
 __all__ = ["spaces", "SpacesPanel", "wrap_into_limits"]
 
+# The figure (two subplots side by side) is 860 px wide at 100 dpi: with ipympl's toolbar beside
+# it, the panel fits a JupyterLab column at a 1400 px window (968 px); the controls go under it.
+FIGSIZE = (8.6, 3.3)
+CONTROLS_WIDTH_PX = 820
 MAX_SOLUTIONS = 4              # ghost robots made in advance (the artists never change in number)
 SOLUTION_NAMES = "ABCD"
 GHOST_COLORS = ("tab:purple", "tab:cyan", "tab:olive", "tab:pink")
@@ -76,7 +81,7 @@ class SpacesPanel(Panel):
     ``message`` (HTML) and ``q``.
     """
 
-    def __init__(self, robot, q=None, *, ik=None, figsize=(10, 4.5), backend="auto"):
+    def __init__(self, robot, q=None, *, ik=None, figsize=FIGSIZE, backend="auto"):
         checked_robot(robot)
         if callable(q) and ik is None:
             raise DHLabError("spaces(robot, q=None, *, ik=None): the second argument is the start "
@@ -90,12 +95,18 @@ class SpacesPanel(Panel):
         self.solutions = []
         q = default_q(robot) if q is None else checked_start(robot, q)
         live = LiveFigure(figsize=figsize, backend=backend)
+        planar = bool(getattr(robot, "is_planar", False))
+        # a planar workspace is wide and short (the P-R mechanism's: 3.8 by 1.7): it gets the room
+        self._grid = live.figure.add_gridspec(1, 2, width_ratios=(1, 2.1) if planar else (1, 1))
         self._build_joint_axes(live)
         self._build_cartesian_axes(live, q)
         rows, self.sliders = joint_sliders(robot, q)
-        self.message = widgets.HTML(layout=widgets.Layout(max_width="480px"))
-        controls = [widgets.HTML("<b>Joints</b> (<i>articulaciones</i>)"), *rows]
-        self.target_sliders, self._sent = [], None
+        # under the figure (two subplots side by side need the width): the joints and the
+        # target in two columns, the inverse kinematics' report under both
+        self.message = widgets.HTML(layout=widgets.Layout(max_width=f"{CONTROLS_WIDTH_PX}px"))
+        columns = [widgets.VBox([widgets.HTML("<b>Joints</b> (<i>articulaciones</i>)"), *rows],
+                                layout=widgets.Layout(margin="0 2em 0 0"))]
+        self.target_sliders = []
         self.branch_buttons = None
         if ik is not None:
             self.target_sliders = self._target_sliders()
@@ -103,21 +114,33 @@ class SpacesPanel(Panel):
                 options=list(SOLUTION_NAMES[:2]), description="branch",
                 tooltips=["solution A of the inverse kinematics", "solution B"],
                 style={"description_width": "3em", "button_width": "3em"})
-            controls += [widgets.HTML("<b>Target</b> for the end effector: inverse kinematics"),
-                         *self.target_sliders, self.branch_buttons]
-        super().__init__(live, controls + [self.message])
+            columns.append(widgets.VBox([
+                widgets.HTML("<b>Target</b> of the end effector (inverse kinematics)"),
+                *self.target_sliders, self.branch_buttons]))
+        controls = [widgets.HBox(columns, layout=widgets.Layout(flex_flow="row wrap")), self.message]
+        super().__init__(live, controls, below=True)
+        # The panel's state is its own (q, target, branch); the sliders show it. A value that
+        # comes back from the browser is the student's move only if it is not the browser's
+        # rounding of a value the panel set (see SliderEchoes: late echoes made it drift).
+        self._q = np.array([float(np.clip(v, *link.qlim)) for v, link in zip(q, robot.links)])
+        self.echoes = SliderEchoes()
+        for slider in [*self.sliders, *self.target_sliders]:
+            self.echoes.expect(slider)
         self._quiet = False
         self.branch = None
+        self.target = None
         self.run(self._from_joints)
-        self.observe_values(self.sliders, self._from_joints)
-        self.observe_values(self.target_sliders, self._from_target)
+        for j, slider in enumerate(self.sliders):
+            slider.observe(lambda change, j=j: self._slider_moved(self._joint_moved, change, j), names="value")
+        for k, slider in enumerate(self.target_sliders):
+            slider.observe(lambda change, k=k: self._slider_moved(self._target_moved, change, k), names="value")
         if self.branch_buttons is not None:
             self.branch_buttons.observe(lambda change: self._quiet or self.run(self.set_branch, change["new"]),
                                         names="value")
 
     # --- figure ------------------------------------------------------------------------
     def _build_joint_axes(self, live):
-        ax = live.figure.add_subplot(1, 2, 1)
+        ax = live.figure.add_subplot(self._grid[0, 0])
         (lo1, hi1), (lo2, hi2) = [[q_to_slider(link, v) for v in link.qlim] for link in self.robot.links]
         labels = list(getattr(self.robot, "joint_labels", ["q1", "q2"]))
         pad1, pad2 = 0.08 * (hi1 - lo1), 0.08 * (hi2 - lo2)
@@ -127,6 +150,10 @@ class SpacesPanel(Panel):
                title="Joint space (espacio articular)")
         ax.add_patch(Rectangle((lo1, lo2), hi1 - lo1, hi2 - lo2, fc="0.93", ec="0.5", lw=1,
                                label="joint limits"))
+        for axis, link, (lo, hi) in ((ax.xaxis, self.robot.links[0], (lo1, hi1)),
+                                     (ax.yaxis, self.robot.links[1], (lo2, hi2))):
+            if link.is_revolute and hi - lo >= 270:      # angles: ticks every 90° (or 180°)
+                axis.set_major_locator(MultipleLocator(90 if hi - lo <= 540 else 180))
         ax.grid(True, alpha=0.3)
         self.solution_marks = [ax.plot([], [], "o", ms=12, mfc="none", mew=2, color=c)[0]
                                for c in GHOST_COLORS]
@@ -140,7 +167,7 @@ class SpacesPanel(Panel):
 
     def _build_cartesian_axes(self, live, q):
         planar = bool(getattr(self.robot, "is_planar", False))
-        ax = live.figure.add_subplot(1, 2, 2, projection=None if planar else "3d")
+        ax = live.figure.add_subplot(self._grid[0, 1], projection=None if planar else "3d")
         # the ghosts (one per possible IK solution) first, so the robot is drawn on top
         self.ghosts = [robot_view(self.robot, q, ax=ax, live=live, planar=planar, triads=False,
                                   labels=False, color=c, alpha=0.45) for c in GHOST_COLORS]
@@ -172,13 +199,30 @@ class SpacesPanel(Panel):
     # --- updates ------------------------------------------------------------------------
     @property
     def q(self) -> np.ndarray:
-        return slider_to_q(self.robot, self.sliders)
+        """The joint vector shown (radians / length units)."""
+        return self._q.copy()
+
+    def _slider_moved(self, action, change, index):
+        if self._quiet or self.echoes.setting:
+            return
+        if self.echoes.classify(change["owner"]) == "student":
+            self.run(action, index)
+
+    def _joint_moved(self, j):
+        """The student moved joint slider ``j``: that joint, and only that one, moves."""
+        link, value = self.robot.links[j], float(self.sliders[j].value)
+        self._q[j] = np.radians(value) if link.is_revolute else value
+        self._from_joints()
+
+    def _target_moved(self, k):
+        """The student moved target slider ``k`` (0: x, 1: y)."""
+        target = list(self.target) if self.target is not None else [float(s.value) for s in self.target_sliders]
+        target[k] = float(self.target_sliders[k].value)
+        self.set_target(*target)
 
     def _from_joints(self):
-        """A joint slider moved: move the robot, and run the IK on where it went.
-        No other joint slider moves; the target sliders follow the end effector."""
-        if self._quiet:
-            return
+        """The joints moved: move the robot, and run the IK on where it went.
+        No joint slider moves; the target sliders follow the end effector."""
         q = self.q
         x, y = np.asarray(self.robot.fk(q), dtype=float)[:2, 3]
         if self.ik is not None:
@@ -189,18 +233,6 @@ class SpacesPanel(Panel):
                 self._set_branch_quietly(SOLUTION_NAMES[near])
         self._draw(q, (x, y) if self.ik is not None else None)
         self._say(self._ik_text((x, y)) if self.ik is not None else "")
-
-    def _from_target(self):
-        """A target slider moved (by the student: the panel's own updates of the
-        target sliders, and the browser's echo of them, are ignored)."""
-        if self._quiet:
-            return
-        values = tuple(float(s.value) for s in self.target_sliders)
-        if self._sent is not None and all(
-                abs(v - sent) <= slider.step / 2 + 1e-12
-                for v, sent, slider in zip(values, self._sent, self.target_sliders)):
-            return                                # our own value, rounded by the slider
-        self.set_target(*values)
 
     def set_target(self, x: float, y: float) -> None:
         """Solve the inverse kinematics for (x, y), show every solution, and move
@@ -214,7 +246,7 @@ class SpacesPanel(Panel):
         q, note = self.q, ""
         k = SOLUTION_NAMES.index(self.branch) if self.branch in SOLUTION_NAMES else 0
         if k < len(self.solutions) and self.solutions_ok[k]:
-            q = self.solutions[k]
+            q = self._q = np.array(self.solutions[k], dtype=float)
             self._set_quietly(self.sliders, [q_to_slider(link, v) for link, v in zip(self.robot.links, q)])
         elif self.solutions:
             others = [SOLUTION_NAMES[j] for j, ok in enumerate(self.solutions_ok) if ok]
@@ -245,7 +277,6 @@ class SpacesPanel(Panel):
 
     def _set_target_sliders(self, target):
         self._set_quietly(self.target_sliders, target)
-        self._sent = tuple(float(s.value) for s in self.target_sliders)   # what the sliders show
 
     def _show_solutions(self, solutions, target):
         """Remember the IK solutions; return those within the joint limits."""
@@ -297,18 +328,14 @@ class SpacesPanel(Panel):
         self.message.value = text
 
     def _set_quietly(self, sliders, values):
-        self._quiet = True
-        try:
-            for slider, value in zip(sliders, values):
-                slider.value = float(np.clip(value, slider.min, slider.max))
-        finally:
-            self._quiet = False
+        for slider, value in zip(sliders, values):
+            self.echoes.set(slider, value)
 
     def __repr__(self):
         return f"<dhlab joint/Cartesian spaces: {self.robot.name}>"
 
 
-def spaces(robot, q=None, *, ik=None, figsize=(10, 4.5), backend: str = "auto") -> SpacesPanel:
+def spaces(robot, q=None, *, ik=None, figsize=FIGSIZE, backend: str = "auto") -> SpacesPanel:
     """Joint space and Cartesian space side by side for a 2-DOF ``robot``.
 
     ``q``: the starting pose (radians / length units). ``ik(x, y)`` (optional,
