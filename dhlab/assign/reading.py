@@ -15,7 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..validation import FULL_TURN, DHLabError, as_float_array, rigid_problem
+from ..units import has_angle_mark
+from ..validation import FULL_TURN, DHLabError, as_float_array, as_number, check_length_size, rigid_problem
 from .report import _vec
 
 __all__ = ["CASE1_RULES", "PARALLEL_RULES", "PRISMATIC_RULES"]
@@ -28,20 +29,20 @@ PRISMATIC_RULES = ("given", "through_origin")
 def _read_axes(axes) -> list:
     """[(point, unit direction, kind)] or a DHLabError naming the bad entry."""
     example = "[((0, 0, 0), (0, 0, 1), 'R'), ((0, 0, 1), (0, 1, 0), 'P')]"
-    if isinstance(axes, (str, bytes)) or not hasattr(axes, "__len__") or len(axes) == 0:
+    if isinstance(axes, (str, bytes, dict)) or not _count(axes):
         raise DHLabError(f"axes must be a list with one (point, direction, kind) per joint, e.g. {example}; "
                          f"got {_short(axes)}.")
     lines = []
     for j, entry in enumerate(axes):
         where = f"axes[{j}] (joint {j + 1})"
-        if isinstance(entry, (str, bytes)) or not hasattr(entry, "__len__") or len(entry) != 3:
+        if isinstance(entry, (str, bytes, dict)) or _count(entry) != 3:
             raise DHLabError(f"{where} must be (point, direction, kind), e.g. ((0, 0, 0), (0, 0, 1), 'R'); "
                              f"got {_short(entry)}.")
         point, direction, kind = entry
         p = _vector3(point, f"{where} point")
-        u = _vector3(direction, f"{where} direction")
-        length = float(np.linalg.norm(u))
-        if length < 1e-12:
+        u = _vector3(direction, f"{where} direction", length=False)
+        size = float(np.abs(u).max())
+        if size < 1e-12:
             raise DHLabError(
                 f"{where} direction is {_vec(u)}: a joint axis needs a non-zero direction vector. "
                 f"Its sense is the positive sense of q{j + 1} (right-hand rule for 'R', sliding sense for 'P')."
@@ -50,16 +51,20 @@ def _read_axes(axes) -> list:
             hint = f" Write it in capitals: {kind.upper()!r}." if isinstance(kind, str) and kind in ("r", "p") \
                 else " 'R' is a revolute joint (it turns about the axis), 'P' a prismatic one (it slides along it)."
             raise DHLabError(f"{where} kind must be 'R' or 'P', got {_short(kind)}.{hint}")
-        lines.append((p, u / length, kind))
+        u = u / size                                   # first to about 1: no overflow in the norm of (0, 0, 1e308)
+        lines.append((p, u / np.linalg.norm(u), kind))
     return lines
 
 
-def _vector3(value, name: str) -> np.ndarray:
+def _vector3(value, name: str, length: bool = True) -> np.ndarray:
+    """3 finite numbers; with ``length`` (a point) each at most LARGEST_LENGTH."""
     arr = as_float_array(value, name)
     if arr.shape != (3,):
         raise DHLabError(f"{name} must be 3 numbers (x, y, z), got shape {arr.shape}: {_short(value)}.")
     if not np.isfinite(arr).all():
         raise DHLabError(f"{name} is {arr.tolist()}: every coordinate must be a finite number.")
+    if length:
+        check_length_size(float(np.abs(arr).max()), name)
     return arr
 
 
@@ -73,9 +78,7 @@ def _read_tool(tool):
         )
     arr = as_float_array(tool, "tool")
     if arr.shape == (3,):
-        if not np.isfinite(arr).all():
-            raise DHLabError(f"tool is {arr.tolist()}: every coordinate must be a finite number.")
-        return None, arr
+        return None, _vector3(arr, "tool")
     if arr.shape != (4, 4):
         raise DHLabError(f"tool must be the end effector's pose (4x4) or point (x, y, z), got shape {arr.shape}.")
     if not np.isfinite(arr).all():
@@ -83,37 +86,39 @@ def _read_tool(tool):
     problem = rigid_problem(arr)
     if problem:
         raise DHLabError(f"tool is not a proper rigid transform: {problem}.")
+    check_length_size(float(np.abs(arr[:3, 3]).max()), "tool (its position)")
     return arr, arr[:3, 3].copy()
 
 
 def _read_choice(value, allowed, name: str):
-    key = value.replace("×", "x") if isinstance(value, str) else value
-    if isinstance(key, str):
-        key = " ".join(key.split())
-    if key not in allowed:
+    key = " ".join(value.replace("×", "x").split()) if isinstance(value, str) else None
+    if key not in allowed:                        # (text only: a list or a dict is not an option)
         options = ", ".join(repr(a) for a in allowed)
         raise DHLabError(f"{name} must be one of {options}, got {_short(value)}.")
     return allowed[key] if isinstance(allowed, dict) else key
 
 
 def _read_tol(tol) -> float:
+    expected = "tol must be a small positive number (relative tolerance, e.g. 1e-9; at most 1e-2)"
     try:
-        value = float(tol)
-    except (TypeError, ValueError):
-        value = float("nan")
+        value = as_number(tol, "tol")              # text, True, None, nan, complex: refused
+    except DHLabError as error:
+        raise DHLabError(f"{expected}, got {_short(tol)}: {error}") from None
     if not (0 < value <= 1e-2):
-        raise DHLabError(f"tol must be a small positive number (relative tolerance, e.g. 1e-9; at most 1e-2), "
-                         f"got {_short(tol)}.")
+        raise DHLabError(f"{expected}, got {_short(tol)}.")
     return value
 
 
 def _read_qlim(qlim, kinds) -> list:
     if qlim is None:
         return [None] * len(kinds)
-    if not hasattr(qlim, "__len__") or len(qlim) != len(kinds):
+    if isinstance(qlim, (str, bytes, dict, set)) or _count(qlim) != len(kinds):
         raise DHLabError(f"qlim must give one (low, high) per joint ({len(kinds)}), got {_short(qlim)}.")
     out = []
     for j, (limits, kind) in enumerate(zip(qlim, kinds)):
+        if kind == "P" and has_angle_mark(limits):
+            raise DHLabError(f"qlim[{j}] (joint {j + 1}, prismatic) is a range of lengths, but it was made with "
+                             f"deg(): give lengths, e.g. (0.0, 0.5); got {_short(limits)}.")
         arr = as_float_array(limits, f"qlim[{j}]")
         if arr.shape != (2,) or not np.isfinite(arr).all() or not arr[0] < arr[1]:
             raise DHLabError(f"qlim[{j}] (joint {j + 1}) must be (low, high) with low < high, got {_short(limits)}.")
@@ -138,3 +143,11 @@ def _scale(points) -> float:
 def _short(x) -> str:
     text = repr(x)
     return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _count(x):
+    """len(x), or None when x has no length (a number, a 0-d array)."""
+    try:
+        return len(x)
+    except TypeError:
+        return None

@@ -10,7 +10,8 @@ masked values are refused):
 
 * ``as_number(x, name)``         one finite real number, as a float
 * ``as_angle(x, name)``          radians, at most one full turn (more is degrees by mistake)
-* ``as_length(x, name)``         a length: refuses values made by ``deg()``
+* ``as_length(x, name)``         a length: refuses values made by ``deg()`` and sizes beyond
+  ``LARGEST_LENGTH`` (1e150, so that squares stay finite; ``check_length_size`` checks a size)
 * ``as_tolerance(x, name)``      a small positive number
 * ``as_index(x, name, lo, hi)``  a whole number lo … hi (``1.5``, ``'1'``, ``True`` refused)
 * ``symbolic=True`` (on as_number/as_angle/as_length): sympy expressions with symbols
@@ -52,14 +53,15 @@ from .arrays import (_check_finite, _numpy_floats, _objects_floats, _sequence_fl
                      as_float_array, as_matrix4, as_sym_matrix4, as_vector, rigid_problem)
 from .joints import (_angle_columns, _check_angle_marks, _check_not_radians,  # noqa: F401
                      as_qlim, check_joint_values)
-from .values import (_PLAIN, FULL_TURN, DHLabError, _finite, _magnitude,  # noqa: F401
-                     _not_a_number, _real, _sympy_real, as_angle, as_choice, as_flag, as_index,
-                     as_length, as_number, as_text, as_timeout, as_tolerance, describe)
+from .values import (_PLAIN, FULL_TURN, LARGEST_LENGTH, DHLabError, _finite, _magnitude,  # noqa: F401
+                     _not_a_number, _real, _sympy_real, as_angle, as_choice, as_flag, as_index, as_length,
+                     as_number, as_text, as_timeout, as_tolerance, check_length_size, describe)
 
 __all__ = [
-    "DHLabError", "FULL_TURN", "describe", "as_number", "as_angle", "as_length", "as_tolerance",
+    "DHLabError", "FULL_TURN", "LARGEST_LENGTH", "describe", "as_number", "as_angle", "as_length", "as_tolerance",
     "as_index", "as_float_array", "as_vector", "check_joint_values", "as_matrix4", "as_sym_matrix4",
     "rigid_problem", "as_qlim", "as_choice", "as_flag", "as_text", "as_timeout", "has_angle_mark",
+    "check_length_size",
 ]
 
 _describe = describe   # the old private name

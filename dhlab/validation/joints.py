@@ -1,6 +1,6 @@
 """Checks of joint values at the boundary: one pose or a batch, radians for revolute
 joints (at most a full turn: more is degrees by mistake), lengths for prismatic ones
-(no ``deg()`` mark, at any depth), and each joint's limits.
+(no ``deg()`` mark, at any depth; at most ``LARGEST_LENGTH``), and each joint's limits.
 
 Part of :mod:`dhlab.validation` (import from there).
 
@@ -21,7 +21,7 @@ import numpy as np
 
 from ..units import Angle, AngleArray, deg, has_angle_mark  # noqa: F401 (deg: for the doctest)
 from .arrays import _check_finite, as_float_array
-from .values import FULL_TURN, DHLabError, as_angle, as_number, describe
+from .values import FULL_TURN, DHLabError, as_angle, as_number, check_length_size, describe
 
 __all__ = ["check_joint_values", "as_qlim"]
 
@@ -62,7 +62,9 @@ def check_joint_values(q, links, name: str = "q", single: bool = False) -> np.nd
                     f"angles are in radians. If you meant {value:g} degrees, pass dhlab.deg({value:g})."
                 )
     for j in prismatic:
-        _check_not_radians(arr[..., j], j, name)
+        column = arr[..., j]
+        check_length_size(float(np.abs(column).max()), f"{name}[{j}] (joint {j + 1}, prismatic)")
+        _check_not_radians(column, j, name)
     return arr
 
 

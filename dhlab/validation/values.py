@@ -25,10 +25,11 @@ import sympy as sp
 
 from ..units import Angle, deg, has_angle_mark  # noqa: F401 (deg: for the doctest)
 
-__all__ = ["DHLabError", "FULL_TURN", "describe", "as_number", "as_angle", "as_length", "as_tolerance",
-           "as_index", "as_choice", "as_flag", "as_text", "as_timeout"]
+__all__ = ["DHLabError", "FULL_TURN", "LARGEST_LENGTH", "describe", "as_number", "as_angle", "as_length",
+           "check_length_size", "as_tolerance", "as_index", "as_choice", "as_flag", "as_text", "as_timeout"]
 
 FULL_TURN = 2 * math.pi
+LARGEST_LENGTH = 1e150      # no robot is longer; and the square of a length (a distance, a norm) stays finite
 _PLAIN = (float, int, Angle, np.float64, np.float32, np.int64, np.int32, np.int16, np.int8,
           np.uint8, np.uint16, np.uint32, np.uint64, np.float16)
 
@@ -149,10 +150,19 @@ def as_angle(x, name: str, *, symbolic: bool = False, turns: float = 1.0):
 
 
 def as_length(x, name: str, *, symbolic: bool = False):
-    """A finite length; a value made by ``deg()`` (an angle) is refused."""
+    """A finite length, at most :data:`LARGEST_LENGTH`; a value made by ``deg()`` (an angle) is refused."""
     if has_angle_mark(x):
         raise DHLabError(f"{name} is a length, but you gave an angle ({describe(x)}): pass a plain number.")
-    return as_number(x, name, symbolic=symbolic)
+    value = as_number(x, name, symbolic=symbolic)
+    check_length_size(_magnitude(value), name)
+    return value
+
+
+def check_length_size(size: float, name: str) -> None:
+    """Refuse a length whose size (absolute value) is beyond :data:`LARGEST_LENGTH`."""
+    if size > LARGEST_LENGTH:
+        raise DHLabError(f"{name} = {size:g} is too large for a length: at most {LARGEST_LENGTH:g} in the "
+                         "robot's unit (beyond that, a pose or a distance overflows). Check the number and its unit.")
 
 
 def as_tolerance(x, name: str = "tol", upper: float = 1e-2, zero: bool = False) -> float:
