@@ -8,7 +8,7 @@ import pytest
 from dhlab import DHLabError
 from dhlab.assign import dh_from_axes
 from dhlab.course.family import FAMILY, family_names
-from dhlab.course.family_model import dh_frames, physical_frames, random_valid_frames, rows_from_frames
+from dhlab.course.family_model import build, dh_frames, physical_frames, random_valid_frames, rows_from_frames
 from dhlab.grading import variants as V
 from test_family import assert_same_motion, random_q
 
@@ -258,26 +258,38 @@ def test_the_graders_valid_frames_accept_the_reference_and_random_answers(key):
         for k in range(robot.n + 1):
             assert puma.is_valid_frame(robot, k, robot.home_frames[k])
             assert puma.fit_link(robot, k, robot.local_points(k))[1] < 1e-6
-        for _ in range(4):                   # prismatic lines kept in place: the grader's families fix them
-            frames = random_valid_frames(robot, rng, slide=0.0 if "P" in robot.kinds else 0.3)
+        for _ in range(4):                   # a prismatic axis's line moved too: its frames' families allow it
+            frames = random_valid_frames(robot, rng, slide=0.3)
             assert all(puma.is_valid_frame(robot, k, F) for k, F in enumerate(frames))
+            for k, F in enumerate(frames):
+                local = (robot.world_points(k) - F[:3, 3]) @ F[:3, :3]
+                assert puma.fit_link(robot, k, local)[1] < 1e-6
 
 
 # --- with the grader's fair checks (the integration seam: the checks take ref=robot) ----------------
 
-def _student_namespace(robot, frames):
-    """What a student who placed DH frames ``frames`` writes in the notebook's answer cells."""
+_WORDS = {"intersect": "intersect", "parallel": "parallel", "coincident": "parallel", "skew": "skew"}
+
+
+def _rows_in_degrees(robot, frames) -> list:
+    """The DH rows that carry ``frames`` into each other: (sign, joint, θ0°, d0, a, α°)."""
+    return [(sign, j, round(math.degrees(th), 9), d, a, round(math.degrees(al), 9))
+            for sign, j, th, d, a, al in rows_from_frames(robot, frames)]
+
+
+def _namespace_from_rows(robot, rows, frames):
+    """What a student writes in the notebook's answer cells: part 1 from the drawn axes
+    (coincident axes: "parallel", case 2, as the notebook's three words say), part 2 the
+    links in ``frames``, part 3 the rows (degrees) with q_i in θ_i, or in d_i for a sliding joint."""
     from dhlab.course.assignment import Tx, Tz, joint_variables
     from dhlab.lines import relation
     q = joint_variables(robot.n)
-    words = {"intersect": "intersect", "parallel": "parallel", "coincident": "parallel", "skew": "skew"}
     ns = {"n_links": robot.n + 1, "n_joints": robot.n, "joint_types": robot.kinds,
-          "x_cases": [words[relation(robot.axes[i - 1], robot.axes[i], tol=2e-3).kind] for i in range(1, robot.n)],
+          "x_cases": [_WORDS[relation(robot.axes[i - 1], robot.axes[i], tol=2e-3).kind] for i in range(1, robot.n)],
           "link_points": {k: [tuple(map(float, p)) for p in (robot.world_points(k) - F[:3, 3]) @ F[:3, :3]]
                           for k, F in enumerate(frames)}}
-    for i, (sign, j, th, d, a, al) in enumerate(rows_from_frames(robot, frames), start=1):
+    for i, (sign, j, th, d, a, al) in enumerate(rows, start=1):
         var = q[j] if sign > 0 else -q[j]
-        th, al = round(math.degrees(th), 9), round(math.degrees(al), 9)
         ns[f"T{i}"] = Tz(var + th, d) @ Tx(al, a) if robot.kinds[i - 1] == "R" else Tz(th, var + d) @ Tx(al, a)
     chain = ns["T1"]
     for i in range(2, robot.n + 1):
@@ -286,42 +298,149 @@ def _student_namespace(robot, frames):
     return ns
 
 
-def _grade(ns, robot):
-    import inspect
+def _student_namespace(robot, frames):
+    """What a student who placed DH frames ``frames`` writes in the notebook's answer cells."""
+    return _namespace_from_rows(robot, _rows_in_degrees(robot, frames), frames)
 
+
+def _report(ns, robot):
     from dhlab.grading import checks
     from dhlab.grading.answers import answers_from_namespace
-    if "ref" not in inspect.signature(checks.check_all).parameters:
-        pytest.skip("the grader's checks do not take ref= (integration pending)")
-    return checks.check_all(answers_from_namespace(ns), ref=robot).score
+    return checks.check_all(answers_from_namespace(ns, robot.n), ref=robot)
 
 
-PRISMATIC = pytest.mark.xfail(strict=True, reason="integration: the part-3 checks still expect every q_i in θ_i, "
-                              "and coincident axes (Cobra's joints 3 and 4) as an x_cases word")
+def _grade(ns, robot):
+    return _report(ns, robot).score
 
 
-@pytest.mark.parametrize("key", [k if "P" not in FAMILY[k].kinds else pytest.param(k, marks=PRISMATIC)
-                                 for k in family_names()])
+@pytest.mark.parametrize("key", family_names())
 def test_graded_against_its_own_variant_every_valid_answer_scores_full_marks(key):
+    """The reference solution and random valid DH assignments (z_i either way, x_i either way,
+    origins slid along parallel axes, x_i turned about coincident ones, a sliding joint's axis
+    drawn on another line parallel to it, x_n turned) of published robots and of variants."""
     rng = np.random.default_rng(21)
-    for seed in range(2):
+    for seed in (None, 0, 1):
+        robot = build(key) if seed is None else V.robot_of_variant(V.variant(key, seed))
+        report = _report(_student_namespace(robot, robot.home_frames), robot)
+        assert report.score == 10, report.text()
+        assert f"move like the {robot.name}" in report.text()
+        for _ in range(4):
+            report = _report(_student_namespace(robot, random_valid_frames(robot, rng, slide=0.3)), robot)
+            assert report.score == 10, report.text()
+
+
+@pytest.mark.parametrize("key", family_names())
+def test_a_classmates_solution_does_not_pass(key):
+    """Full marks for a classmate's robot (same family, another variant) are far from full marks
+    for yours: part 2's links and part 3's transformations do not fit."""
+    for mine, theirs in (("mine", "theirs"), ("x", "y")):
+        mine, theirs = (V.robot_of_variant(V.variant(key, s)) for s in (mine, theirs))
+        assert _grade(_student_namespace(theirs, theirs.home_frames), theirs) == 10
+        report = _report(_student_namespace(theirs, theirs.home_frames), mine)
+        assert report.score < 7 and report.part("part3").score < 5 and report.part("part2").score < 3
+
+
+# --- mistakes: each one costs exactly its item ----------------------------------------------------
+
+def _moves_like(robot, rows, Q) -> bool:
+    """The ground truth of part 3, independent of the grader: the chain of ``rows`` moves every
+    revolute axis on the robot's line (a sliding one: its direction), each the drawn way, puts
+    the end point in place, and its last z along the last axis, at the configurations Q."""
+    F = dh_frames([(s, j, math.radians(th), d, a, math.radians(al)) for s, j, th, d, a, al in rows], robot.kinds, Q)
+    R = robot.frames(Q)
+    points, directions = robot.axes_at(Q)
+    for i, (row, kind) in enumerate(zip(rows, robot.kinds)):
+        z = row[0] * F[:, i, :3, 2]
+        if np.abs(np.sum(z * directions[:, i], axis=1) - 1).max() > 1e-6:
+            return False
+        off = F[:, i, :3, 3] - points[:, i]
+        if kind == "R" and np.abs(off - np.sum(off * z, axis=1)[:, None] * z).max() > 1e-6:
+            return False
+    last_z = np.abs(np.abs(np.sum(F[:, -1, :3, 2] * R[:, -1, :3, 2], axis=1)) - 1).max() < 1e-6
+    return bool(last_z and np.abs(F[:, -1, :3, 3] - R[:, -1, :3, 3]).max() < 1e-6)
+
+
+def _row_mistakes(robot, rows):
+    """Typical slips in one T_i: the joint's sense, a turned or flipped x (θ + 90°, θ + 180°), a
+    wrong length (d, a, the sign of a), a wrong twist (−α, α + 90°, α in radians)."""
+    for i, (s, j, th, d, a, al) in enumerate(rows):
+        slides = robot.kinds[i] == "P"
+        yield i, "sense", (-s, j, th if slides else -th, -d if slides else d, a, al)
+        yield i, "θ + 90°", (s, j, th + 90, d, a, al)
+        yield i, "θ + 180°", (s, j, th + 180, d, a, al)
+        yield i, "d + 5 cm", (s, j, th, d + 0.05, a, al)
+        yield i, "a + 5 cm", (s, j, th, d, a + 0.05, al)
+        yield i, "−a", (s, j, th, d, -a, al)
+        yield i, "−α", (s, j, th, d, a, -al)
+        yield i, "α + 90°", (s, j, th, d, a, al + 90)
+        yield i, "α in radians", (s, j, th, d, a, math.radians(al))
+
+
+def _other_mistakes(robot, ns):
+    """Slips in parts 1 and 2 and in the chain: (part, what, the changed namespace)."""
+    from dhlab.grading import puma
+    wrong_word = {"intersect": "skew", "skew": "intersect", "parallel": "intersect"}
+    yield "part1", "n_links", dict(ns, n_links=robot.n)
+    yield "part1", "n_joints", dict(ns, n_joints=robot.n + 1)
+    k = robot.kinds.find("P") if "P" in robot.kinds else 1
+    yield "part1", "joint_types", dict(ns, joint_types=robot.kinds[:k] + "PR"[robot.kinds[k] == "P"] + robot.kinds[k + 1:])
+    for i in range(1, robot.n):
+        cases = list(ns["x_cases"])
+        cases[i - 1] = wrong_word[cases[i - 1]]
+        yield "part1", f"x{i}", dict(ns, x_cases=cases)
+    for k in range(robot.n + 1):
+        points = dict(ns["link_points"])
+        moved = [list(p) for p in points[k]]
+        moved[-1][k % 3] += 0.05
+        points[k] = [tuple(p) for p in moved]
+        yield "part2", f"link {k}: a point 5 cm off", dict(ns, link_points=points)
+        if k and not puma.frame_family(robot, k).loose and not puma.is_valid_frame(robot, k, np.eye(4)):
+            # (next to a sliding joint, and on a SCARA, the world frame may be a valid frame k)
+            world = {**ns["link_points"], k: [tuple(map(float, p)) for p in robot.world_points(k)]}
+            yield "part2", f"link {k} in world coordinates", dict(ns, link_points=world)
+    swapped = ns["T2"] @ ns["T1"]
+    for i in range(3, robot.n + 1):
+        swapped = swapped @ ns[f"T{i}"]
+    yield "part3", "chain out of order", dict(ns, chain=swapped)
+
+
+def _lost(report) -> list:
+    return [(part.key, item.label) for part in report.parts for item in part.items if not item.ok]
+
+
+@pytest.mark.parametrize("key", family_names())
+def test_each_mistake_costs_exactly_its_item(key):
+    """Every single slip, in a variant's reference solution and in a random valid one: when it
+    changes what the answer says (the chain moves unlike the robot, a fact of part 1 or a
+    link's points), exactly one item is lost, and the score drops by that item's share of its
+    part; a change that leaves a valid answer (e.g. θ + 180° on a frame whose x is free) keeps
+    full marks. Ground truth from the robot's motion, not from the grader."""
+    rng = np.random.default_rng(31)
+    counted = 0
+    for seed in (2, 3):                                   # the reference solution of one, a random one of the other
         robot = V.robot_of_variant(V.variant(key, seed))
-        assert _grade(_student_namespace(robot, robot.home_frames), robot) == 10
-        for _ in range(2):
-            frames = random_valid_frames(robot, rng, slide=0.0 if "P" in robot.kinds else 0.3)
-            assert _grade(_student_namespace(robot, frames), robot) == 10
-
-
-@pytest.mark.parametrize("key", [k for k in family_names() if "P" not in FAMILY[k].kinds])
-def test_a_classmates_solution_does_not_pass_and_a_slip_costs(key):
-    mine, theirs = (V.robot_of_variant(V.variant(key, s)) for s in ("mine", "theirs"))
-    ns = _student_namespace(theirs, theirs.home_frames)
-    assert _grade(ns, mine) < 8                       # a swapped variant: far from full marks
-    from dhlab.course.assignment import Tx
-    ns = _student_namespace(mine, mine.home_frames)
-    t2 = ns["T2"]
-    ns["T2"] = t2.z @ Tx(t2.x.alpha + 90, t2.x.a)    # one slip: α2 off by 90°
-    assert 8 < _grade(ns, mine) < 10
+        Q = np.vstack([np.zeros(robot.n)] + [[rng.uniform(max(lo, -3.0), min(hi, 3.0)) for lo, hi in robot.qlim]
+                                             for _ in range(6)])
+        for frames in [robot.home_frames if seed == 2 else random_valid_frames(robot, rng, slide=0.3)]:
+            rows = _rows_in_degrees(robot, frames)
+            ns = _namespace_from_rows(robot, rows, frames)
+            cases = [(part, what, changed) for part, what, changed in _other_mistakes(robot, ns)]
+            for i, what, row in _row_mistakes(robot, rows):
+                if row != rows[i]:
+                    changed = rows[:i] + [row] + rows[i + 1:]
+                    cases.append(("part3" if not _moves_like(robot, changed, Q) else None, f"T{i + 1}: {what}",
+                                  _namespace_from_rows(robot, changed, frames)))
+            for part, what, changed in cases:
+                report = _report(changed, robot)
+                lost = _lost(report)
+                if part is None:                          # still a valid answer
+                    assert not lost, (key, seed, what, report.text())
+                    continue
+                counted += 1
+                assert len(lost) == 1 and lost[0][0] == part, (key, seed, what, report.text())
+                share = report.part(part).points / len(report.part(part).items)
+                assert report.score == pytest.approx(10 - share, abs=0.011), (what, report.text())
+    assert counted > 60                                   # the mistakes were mistakes
 
 
 @pytest.mark.parametrize("key", ["kr5", "ur5"])

@@ -70,7 +70,7 @@ class Analysis:
     items: list                 # one Item per T_i
     frames: list                # the intended frame k at home (4x4), k = 0…n
     valid: list                 # whether the student's own T_k built that frame (True) or it was inferred
-    structural_ok: bool         # every T_i is a Row with its own joint's variable in θ
+    structural_ok: bool         # every T_i is a Row with its own joint's variable in θ (d for a sliding joint)
     ref: object = None
 
 
@@ -98,16 +98,23 @@ def matrix(row: Row, q: float = 0.0) -> np.ndarray:
 
 # --- one row on one frame ----------------------------------------------------------------------
 
-def _structure(i: int, row: Row) -> list:
-    """What is wrong with T_i whatever the frames: the joint variable's place."""
+def _structure(ref, i: int, row: Row) -> list:
+    """What is wrong with T_i whatever the frames: the joint variable's place (θ_i for a
+    joint that turns, d_i for one that slides)."""
     joint, _, where = row.joint
+    slides = ref.kinds[i - 1] == "P"
     if joint is None:
+        if slides:
+            return [f"d{i} has no joint variable: joint {i} slides, so write d{i} = q{i} + (a constant length)"]
         return [f"θ{i} has no joint variable: joint {i} turns, so write θ{i} = q{i} + (a constant angle)"]
-    if where == "d":
+    if where == "d" and not slides:
         return [f"q{i} is in d{i}, which would make joint {i} slide (prismatic); "
                 f"the robot's joint {i} turns: put q{i} in θ{i}"]
+    if where == "theta" and slides:
+        return [f"q{i} is in θ{i}, which would make joint {i} turn; the robot's joint {i} slides "
+                f"(prismatic): put q{i} in d{i}, and a constant angle in θ{i}"]
     if joint != i:
-        return [f"θ{i} uses q{joint}; each T_i carries its own joint's variable, q{i}"]
+        return [f"{'d' if slides else 'θ'}{i} uses q{joint}; each T_i carries its own joint's variable, q{i}"]
     return []
 
 
@@ -186,7 +193,7 @@ def analyse(answers: Answers, ref=None) -> Analysis:
             states = _dedupe([_State(ref.home_frames[i], s.cost + 1, s.charged + (i,), s.items + [item],
                                      s.frames + [ref.home_frames[i]], s.own + [False], s.edits) for s in states])
             continue
-        structural_ok = structural_ok and not _structure(i, row)
+        structural_ok = structural_ok and not _structure(ref, i, row)
         A = matrix(row)
         states = _dedupe([new for s in states for new in _expand(ref, i, rows, A, s)])
     best = min(states, key=_State.rank)
@@ -199,7 +206,7 @@ def _expand(ref, i: int, rows, A, s: _State) -> list:
     anyway), or T_i wrong."""
     row = rows[i - 1]
     label = f"T{i} = {row.text()}"
-    broken = _structure(i, row)
+    broken = _structure(ref, i, row)
     out = []
     passed_free = False
     if not broken:
@@ -209,11 +216,12 @@ def _expand(ref, i: int, rows, A, s: _State) -> list:
             extra = 0 if prev_charged else 1
             candidates += [(how, s.V @ g, extra) for how, g in FLIPS.items()]
             if prev_charged:                        # T_{i-1} is wrong anyway: any valid frame i-1
+                inverse = np.linalg.inv(A)
                 for _, V, _ in list(candidates):
-                    G, _, _ = puma.nearest_valid_frame(ref, i, V @ A)
-                    W = G @ np.linalg.inv(A)
-                    if puma.is_valid_frame(ref, i - 1, W):
-                        candidates.append(("any", W, 0))
+                    for G, _, _ in puma.valid_frames_near(ref, i, V @ A):     # the nearest first
+                        W = G @ inverse
+                        if puma.is_valid_frame(ref, i - 1, W):
+                            candidates.append(("any", W, 0))
         for how, V, extra in candidates:
             ok, F, _ = _place(ref, i, V, row, A)
             if not ok:
@@ -250,6 +258,8 @@ def _one_edit_fits(ref, i: int, V, row: Row) -> bool:
              dataclasses.replace(row, theta=dataclasses.replace(theta, sign=-theta.sign)),
              dataclasses.replace(row, alpha=row.alpha + 180), dataclasses.replace(row, alpha=-row.alpha),
              dataclasses.replace(row, a=-row.a), dataclasses.replace(row, d=dataclasses.replace(d, const=-d.const))]
+    if d.joint is not None:                         # a sliding joint: the sign of its variable
+        edits.append(dataclasses.replace(row, d=dataclasses.replace(d, sign=-d.sign)))
     return any(_place(ref, i, V, new, matrix(new))[0] for new in edits)
 
 
@@ -267,6 +277,8 @@ def _dedupe(states) -> list:
 # --- the messages -------------------------------------------------------------------------------
 
 def _sense_message(i: int, row: Row, z_along_arrow: bool) -> str:
+    if row.joint[2] == "d":
+        return _slide_sense_message(i, row, z_along_arrow)
     if z_along_arrow:
         return (f"joint {i}: a positive q{i} turns the arm the wrong way: your z{i - 1} points along the "
                 f"drawn positive sense of joint {i}, so θ{i} must grow with q{i}; write θ{i} = q{i} + (constant), "
@@ -274,6 +286,16 @@ def _sense_message(i: int, row: Row, z_along_arrow: bool) -> str:
     return (f"joint {i}: a positive q{i} turns the arm the wrong way: your z{i - 1} points against the "
             f"drawn positive sense of joint {i}, so θ{i} = {row.theta.text('°')} turns it opposite to the "
             f"curled arrow; write θ{i} = -q{i} + (constant), or let z{i - 1} point along the arrow")
+
+
+def _slide_sense_message(i: int, row: Row, z_along_arrow: bool) -> str:
+    if z_along_arrow:
+        return (f"joint {i}: a positive q{i} slides the arm the wrong way: your z{i - 1} points along the "
+                f"drawn positive direction of joint {i}, so d{i} must grow with q{i}; write d{i} = q{i} + "
+                f"(constant), not {row.d.text()}")
+    return (f"joint {i}: a positive q{i} slides the arm the wrong way: your z{i - 1} points against the "
+            f"drawn positive direction of joint {i}, so d{i} = {row.d.text()} moves it opposite to the "
+            f"arrow; write d{i} = -q{i} + (constant), or let z{i - 1} point along the arrow")
 
 
 def _line_word(angle: float) -> str:
@@ -317,6 +339,8 @@ def diagnose(ref, i: int, V, F, row: Row) -> str:
                 f"at the home pose: x{i} must lie along the common normal of z{i - 1} and z{i} "
                 f"(at home, along ±{_vec(rel.normal, 3)}); check the constant in θ{i} "
                 f"(yours: {row.theta.const:g}°) and the sign of α{i}")
+    if "P" in ref.kinds[i - 1:i + 1]:             # a sliding joint's line is the student's: no distances
+        return _sliding_problem(ref, i, F, row)
     if abs(abs(row.a) - rel.distance) > puma.TOL_POS:
         should = (f"should meet z{i - 1} (a{i} = 0)" if rel.kind == "intersect" else
                   f"should be {rel.distance:.4g} m from z{i - 1} (the length of their common normal, |a{i}|)")
@@ -336,6 +360,18 @@ def diagnose(ref, i: int, V, F, row: Row) -> str:
     return (f"{joint}: x{i} must cross z{i - 1} where the common normal of z{i - 1} and z{i} does; yours "
             f"crosses it {abs(shift):.4g} m {'short of' if shift > 0 else 'past'} that point (along z{i - 1}): "
             f"check d{i} (yours: {row.d.text()}){free}")
+
+
+def _sliding_problem(ref, i: int, F, row: Row) -> str:
+    """Why frame i, next to a sliding joint and with z_i in the right direction, is not valid."""
+    joint = f"joint {i + 1}"
+    off = ref.axes[i].distance_to_point(F[:3, 3])
+    if ref.kinds[i] == "R" and off > puma.TOL_POS:
+        return (f"{joint}: z{i} must lie on the axis of {joint}, the line it turns about; yours is {off:.4g} m "
+                f"from it at the home pose: check a{i} (yours: {row.a:g}), d{i} (yours: {row.d.text()}) and "
+                f"the constant in θ{i} (yours: {row.theta.const:g}°)")
+    return (f"frame {i} is not a valid DH frame: x{i} must be square to z{i - 1} and z{i} (the directions of the "
+            f"axes of joints {i} and {i + 1}) and z{i} along the axis of {joint}; check θ{i} and α{i}")
 
 
 # --- the whole chain, moving -------------------------------------------------------------------

@@ -181,11 +181,22 @@ def _link_points(robot, W, floor) -> list:
 
 @dataclass
 class FrameFamily:
-    """Every valid DH frame k at home: ``base · Rz(φ) · Tr(0, 0, t)`` for each base in
-    ``bases``, with φ free when ``spin`` and t free when ``shift`` (else both 0)."""
+    """Every valid DH frame k at home: ``Tr(v) · base · Rz(φ) · Tr(s, 0, t)`` for each base in
+    ``bases``, with φ free when ``spin``, t free when ``shift``, s free when ``slide_x`` and
+    v free in the span of the world directions ``slides`` (else all 0).
+
+    ``slide_x`` and ``slides`` come with a prismatic joint: only the direction of a sliding
+    joint's axis is fixed, so the student places its line (z of the frame before it)."""
     bases: list
     spin: bool
     shift: bool
+    slide_x: bool = False
+    slides: tuple = ()
+
+    @property
+    def loose(self) -> bool:
+        """Whether the origin may move off the line(s) of the revolute case."""
+        return self.slide_x or bool(self.slides)
 
 
 def _frame(origin, x, z) -> np.ndarray:
@@ -216,7 +227,8 @@ def _frame_family(ref: Reference, k: int) -> FrameFamily:
     of joint k+1 (either sense), x_k along the common normal of the axes of joints k
     and k+1 (either sense), origin where x_k meets z_k; when the axes are parallel the
     origin may slide along z_k; when they coincide x_k may also turn. Frame n: origin
-    at the wrist centre, z_n along the axis of joint n, x_n free about it.
+    at the wrist centre, z_n along the axis of joint n, x_n free about it. Next to a
+    prismatic joint, see :func:`_sliding_family`.
     """
     n = ref.n
     if k == 0:
@@ -226,6 +238,8 @@ def _frame_family(ref: Reference, k: int) -> FrameFamily:
         x = _any_perpendicular(w)
         return FrameFamily([_frame(ref.wrist_centre, x, w), _frame(ref.wrist_centre, x, -w)], True, False)
     rel = relation(ref.axes[k - 1], ref.axes[k])
+    if "P" in ref.kinds[k - 1:k + 1]:
+        return _sliding_family(ref, k, rel)
     w = ref.axes[k].direction
     bases = []
     for sz in (1, -1):
@@ -237,10 +251,67 @@ def _frame_family(ref: Reference, k: int) -> FrameFamily:
     return FrameFamily(bases, spin=rel.normal is None, shift=rel.kind in ("parallel", "coincident"))
 
 
+def _sliding_family(ref: Reference, k: int, rel) -> FrameFamily:
+    """Frame k when joint k or joint k+1 slides (1 ≤ k < n).
+
+    A prismatic joint's axis is a direction: the DH convention lets its line be drawn
+    anywhere parallel to it. So when joint k+1 slides, z_k is any line along its
+    direction; when joint k slides, z_{k-1} is, and x_k (the common normal from z_{k-1}
+    to z_k) follows it. Whatever the lines, z_k keeps its direction, x_k stays square to
+    the directions of both axes, and x_k still crosses the axis of a revolute joint k:
+
+    * joint k+1 slides, joint k turns: the origin lies on a line that crosses the axis of
+      joint k square to both directions (``slides``: that normal and joint k's direction);
+      parallel axes: x_k points away from joint k's axis, any way round it (``spin``,
+      ``slide_x``, ``shift``);
+    * joint k slides, joint k+1 turns: the origin anywhere on the axis of joint k+1
+      (``shift``), x_k along the normal of the two directions, or any way round when
+      they are parallel (``spin``);
+    * both slide: the origin anywhere.
+    """
+    prev_slides, this_slides = ref.kinds[k - 1] == "P", ref.kinds[k] == "P"
+    a, b = ref.axes[k - 1], ref.axes[k]
+    w = b.direction
+    everywhere = tuple(np.eye(3))
+    if rel.is_parallel:
+        origin = a.nearest_point(b.point) if this_slides and not prev_slides else b.point
+        x = _any_perpendicular(w)
+        bases = [_frame(origin, x, w), _frame(origin, x, -w)]
+        if prev_slides and this_slides:
+            return FrameFamily(bases, True, False, slides=everywhere)
+        return FrameFamily(bases, True, True, slide_x=this_slides)
+    normal = np.cross(a.direction, w)
+    normal = normal / np.linalg.norm(normal)
+    if this_slides and not prev_slides:
+        origin, slides, shift = a.nearest_point(rel.foot), (normal, a.direction), False
+    else:
+        origin, slides, shift = b.point, (everywhere if this_slides else ()), not this_slides
+    bases = [_frame(origin, sx * normal, sz * w) for sz in (1, -1) for sx in (1, -1)]
+    return FrameFamily(bases, False, shift, slides=slides)
+
+
 def _member(base, phi, t):
     c, s = math.cos(phi), math.sin(phi)
     M = np.array([[c, -s, 0, 0], [s, c, 0, 0], [0, 0, 1, t], [0, 0, 0, 1.0]])
     return base @ M
+
+
+def _free_directions(family: FrameFamily, R) -> np.ndarray:
+    """The directions (world, columns) the origin may move along, for a frame turned R."""
+    dirs = list(family.slides) + ([R[:, 2]] if family.shift else []) + ([R[:, 0]] if family.slide_x else [])
+    return np.array(dirs, float).T if dirs else np.zeros((3, 0))
+
+
+def _loose_member(family: FrameFamily, base, phi, offset) -> tuple:
+    """The member of a loose family turned φ from ``base`` whose origin is nearest
+    ``base``'s origin + ``offset``: (frame, the offset left over)."""
+    c, s_ = math.cos(phi), math.sin(phi)
+    R = base[:3, :3] @ np.array([[c, -s_, 0], [s_, c, 0], [0, 0, 1.0]])
+    D = _free_directions(family, R)
+    move = D @ np.linalg.lstsq(D, offset, rcond=None)[0] if D.shape[1] else np.zeros(3)
+    F = np.eye(4)
+    F[:3, :3], F[:3, 3] = R, base[:3, 3] + move
+    return F, offset - move
 
 
 def rotation_angle(R1, R2) -> float:
@@ -250,29 +321,41 @@ def rotation_angle(R1, R2) -> float:
 
 
 def nearest_valid_frame(ref: Reference, k: int, F) -> tuple:
-    """The valid DH frame k nearest to ``F`` (home pose): (frame, angle°, distance m).
+    """The valid DH frame k nearest to ``F`` (home pose): (frame, angle°, distance m)."""
+    angle, dist, build = min(_near(ref, k, F), key=lambda m: math.radians(m[0]) + m[1] / 0.1)
+    return build(), angle, dist
 
-    Worked in each base frame's coordinates (a rigid motion keeps angles and distances),
-    so only the winner is built as a matrix.
-    """
+
+def valid_frames_near(ref: Reference, k: int, F) -> list:
+    """For each base of frame k's family (each sense of z and x), its member nearest to
+    ``F``: [(frame, angle°, distance m)], the nearest first."""
+    near = sorted(_near(ref, k, F), key=lambda m: math.radians(m[0]) + m[1] / 0.1)
+    return [(build(), angle, dist) for angle, dist, build in near]
+
+
+def _near(ref: Reference, k: int, F) -> list:
+    """Per base: (angle°, distance m, a function that builds the member). Worked in the base
+    frame's coordinates (a rigid motion keeps angles and distances), so that only the
+    members asked for are built as matrices."""
     family = frame_family(ref, k)
     F = np.asarray(F, float)
-    best = None
+    out = []
     for base in family.bases:
         Rb, ob = base[:3, :3], base[:3, 3]
         L = (Rb.T @ F[:3, :3]).tolist()
         o = (Rb.T @ (F[:3, 3] - ob)).tolist()
         phi = math.atan2(L[1][0], L[0][0]) if family.spin else 0.0
-        t = o[2] if family.shift else 0.0
         c, s_ = math.cos(phi), math.sin(phi)
         trace = c * (L[0][0] + L[1][1]) + s_ * (L[1][0] - L[0][1]) + L[2][2]
         angle = math.degrees(math.acos(max(-1.0, min(1.0, (trace - 1) / 2))))
-        dist = math.sqrt(o[0] ** 2 + o[1] ** 2 + (o[2] - t) ** 2)
-        score = math.radians(angle) + dist / 0.1
-        if best is None or score < best[0]:
-            best = (score, base, phi, t, angle, dist)
-    _, base, phi, t, angle, dist = best
-    return _member(base, phi, t), angle, dist
+        if family.loose:
+            member, left = _loose_member(family, base, phi, F[:3, 3] - ob)
+            out.append((angle, float(np.linalg.norm(left)), lambda member=member: member))
+        else:
+            t = o[2] if family.shift else 0.0
+            out.append((angle, math.sqrt(o[0] ** 2 + o[1] ** 2 + (o[2] - t) ** 2),
+                        lambda base=base, phi=phi, t=t: _member(base, phi, t)))
+    return out
 
 
 def is_valid_frame(ref: Reference, k: int, F) -> bool:
@@ -288,6 +371,8 @@ def fit_link(ref: Reference, k: int, local_points) -> tuple:
     family = frame_family(ref, k)
     P = np.asarray(local_points, float)
     W = ref.world_points(k)
+    if family.loose:
+        return min((_fit_loose(family, base, P, W) for base in family.bases), key=lambda fit: fit[1])
     best = None
     for base in family.bases:
         U = (W - base[:3, 3]) @ base[:3, :3]            # the world points in the base frame
@@ -306,12 +391,44 @@ def fit_link(ref: Reference, k: int, local_points) -> tuple:
     return best
 
 
+def _fit_loose(family: FrameFamily, base, P, W) -> tuple:
+    """:func:`fit_link` in a loose family, from one base: the origin by least squares for
+    each turn φ tried. Exact for points of a valid frame: φ of the rigid fit in the xy
+    plane, or, when the points do not fix it (all on one line along z), the turns that put
+    the origin's offset along x (``slide_x``)."""
+    def at(phi):
+        c, s_ = math.cos(phi), math.sin(phi)
+        R = base[:3, :3] @ np.array([[c, -s_, 0], [s_, c, 0], [0, 0, 1.0]])
+        C, _ = _loose_member(family, base, phi, (W - base[:3, 3] - P @ R.T).mean(axis=0))
+        return float(np.max(np.linalg.norm(P @ C[:3, :3].T + C[:3, 3] - W, axis=1))), C
+    if not family.spin:
+        err, C = at(0.0)
+        return C, err
+    U = (W - base[:3, 3]) @ base[:3, :3]
+    phis = []
+    for p, u in ((P[:, :2] - P[:, :2].mean(axis=0), U[:, :2] - U[:, :2].mean(axis=0)), (P[:, :2], U[:, :2])):
+        num, den = float(np.sum(p[:, 0] * u[:, 1] - p[:, 1] * u[:, 0])), float(np.sum(p[:, 0] * u[:, 0] + p[:, 1] * u[:, 1]))
+        phis.append(math.atan2(num, den) if abs(num) + abs(den) > 1e-12 else 0.0)
+    (px, py), (ux, uy) = P[:, :2].mean(axis=0), U[:, :2].mean(axis=0)
+    r = math.hypot(ux, uy)
+    if r > 1e-12:                                  # uy·cos φ − ux·sin φ = py: the offset along x
+        beta, gamma = math.atan2(ux, uy), math.acos(max(-1.0, min(1.0, py / r)))
+        phis += [gamma - beta, -gamma - beta]
+    err, C = min((at(phi) for phi in phis), key=lambda fit: fit[0])
+    return C, err
+
+
 # --- other valid answers: the free choices of the DH convention ------------------------------
 
 def random_valid_frames(rng, ref: Reference | None = None) -> list:
     """A random valid set of DH frames 0…n at home: each frame a random member of its
-    family (signs of z and x, origins slid along parallel axes, the last x turned)."""
+    family (signs of z and x, origins slid along parallel axes, the last x turned). A robot
+    with a prismatic joint (an :class:`~dhlab.course.family_model.AssignmentRobot`): its own
+    :func:`~dhlab.course.family_model.random_valid_frames`, which also moves the sliding axes' lines."""
     ref = ref or reference()
+    if "P" in ref.kinds:               # the line of a sliding axis ties two frames' choices together
+        from ..course.family_model import random_valid_frames as with_lines
+        return with_lines(ref, rng)
     frames = []
     for k in range(ref.n + 1):
         family = frame_family(ref, k)
