@@ -337,10 +337,14 @@ def _frame_problem(ref, k: int, names, P, W) -> str:
             return (f"frame {n}'s origin (the end effector's) is {ref.end_text}; in your model the "
                     f"origin is {miss:.4f} m from it")
         off = axis.distance_to_point(o)
-        if off > puma.TOL_POS:
+        if ref.kinds[k] == "R" and off > puma.TOL_POS:
             return (f"z{k} runs along the axis of joint {k + 1}, but your frame's origin is {off:.4f} m off "
                     f"that axis; the origin of frame {k} lies on it")
         rel = puma.relation(ref.axes[k - 1], ref.axes[k])
+        if "P" in ref.kinds[k - 1:k + 1]:
+            return (f"your x{k} must be square to the axes of joints {k} and {k + 1} and cross the line you "
+                    f"chose for z{k - 1} (a sliding joint's axis may be drawn on any line parallel to it, but "
+                    f"x{k} then follows it); in your model it does not")
         return (f"your x{k} must lie along the common normal of the axes of joints {k} and {k + 1} "
                 f"({rel.kind}: x{k} ⟂ both, crossing the axis of joint {k}); in your model it does not")
     C, _ = puma.fit_link(ref, k, P)

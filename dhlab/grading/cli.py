@@ -1,6 +1,7 @@
 """Grade a folder of submitted PUMA notebooks: ``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv``.
 
     dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv [-j N] [--timeout S] [--resume]
+                [--secret-file KEY --release RELEASE_DIR [--fallback roster|none]]
     python -m dhlab.grading.cli puma SUBMISSIONS_DIR ...          (the same)
 
 Every ``*.ipynb`` under SUBMISSIONS_DIR (any depth, e.g. nbgrader's
@@ -27,22 +28,29 @@ Every ``*.ipynb`` under SUBMISSIONS_DIR (any depth, e.g. nbgrader's
 A submission that raises, hangs, floods its output, runs out of memory, is not a
 notebook, or tampers with dhlab gets the marks its real answers earn and a reason in
 ``status``; it never stops the batch.
+
+**Personal variants** (notebooks released with ``dhlab-assign release``): with
+``--secret-file`` each submission is graded against its student's own robot. While the
+submissions are staged (step 1, before any runs) the grader works out whose each one is,
+verifies the variant signed in it, rewrites the copy's "Your robot" cell from the variant
+it will be graded against, and the checks score against that robot; ``--release`` (the
+release folder) gives the roster and every student's released variant, the fallback for a
+missing, tampered or classmate's record (``--fallback roster``, the default with
+``--release``; ``none``: no marks). The rules, and the gradebook's five variant columns:
+:mod:`dhlab.grading.grade_variants`. Without ``--secret-file`` every submission is
+graded against the PUMA 560, as before.
 """
 from __future__ import annotations
 
 import argparse
 import concurrent.futures
-import json
-import os
-import secrets
-import signal
-import subprocess
+import functools
 import sys
-import tempfile
 import threading
 import time
 from pathlib import Path
 
+from .launch import run_submission
 from .staging import find_submissions
 
 __all__ = ["main", "grade_submission", "find_submissions", "run_submission"]
@@ -50,113 +58,19 @@ __all__ = ["main", "grade_submission", "find_submissions", "run_submission"]
 ASSIGNMENTS = ("puma",)
 
 
-def _kill_kernel(pid_file: Path) -> None:
-    """Kill the kernel a runner started (its own process group), if it is still there."""
-    try:
-        pid = int(pid_file.read_text().strip())
-        cmdline = Path(f"/proc/{pid}/cmdline").read_bytes()
-    except (OSError, ValueError):
-        return
-    if b"sandbox.py" in cmdline:
-        try:
-            os.killpg(pid, signal.SIGKILL)
-        except (ProcessLookupError, PermissionError):
-            pass
-
-
-def run_submission(staged, options, iso=None, hide=(), retries: int = 2) -> dict:
-    """Run one staged notebook in a runner process; the runner's result (a dict).
-
-    If the runner process itself dies (a notebook can kill its kernel's parent when it
-    runs as the grader's user), the notebook is run again without the cell that was
-    running, at most ``retries`` times. Afterwards every process the submission started
-    is ended and its folder removed.
-    """
-    from .isolation import setup
-    iso = iso or setup(1, "none")
-    user = iso.acquire()
-    token = secrets.token_hex(12)
-    workdir = iso.workdir(user)
-    try:
-        killed = []
-        for attempt in range(retries + 1):
-            run, cell = _run_once(staged.copy, options, skip=killed, user=user, workdir=workdir, token=token,
-                                  hide=hide)
-            if not run.get("grader_error") or cell is None or cell in killed or attempt == retries:
-                break
-            killed.append(cell)
-            iso.cleanup(user, Path("/nonexistent"), token)
-        if killed and not run.get("grader_error"):
-            run["runner_killed"] = killed
-        elif killed:
-            run["grader_error"] += f" (also in a run without cell {', '.join(map(str, killed))})"
-        return run
-    finally:
-        iso.cleanup(user, workdir, token)
-        iso.release(user)
-
-
-def _run_once(copy: Path, options, skip, user=None, workdir=None, token="", hide=()) -> tuple:
-    """(result dict, the cell that was running when the runner stopped or None)."""
-    from .runner import RUNNER
-    with tempfile.TemporaryDirectory(prefix="dhlab-grade-") as tmp:
-        tmp = Path(tmp)
-        result, pid_file, log = tmp / "result.json", tmp / "kernel.pid", tmp / "runner.log"
-        progress = tmp / "progress"
-        cmd = [sys.executable, "-B", str(RUNNER), str(copy), str(result),
-               "--timeout", str(options.timeout), "--total-timeout", str(options.total_timeout),
-               "--memory-mb", str(options.memory_mb), "--output-mb", str(options.output_mb),
-               "--pid-file", str(pid_file), "--progress-file", str(progress), "--token", token]
-        if workdir is not None:
-            cmd += ["--workdir", str(workdir)]
-        if user is not None:
-            cmd += ["--uid", str(user[1]), "--gid", str(user[2])]
-            cmd += [a for folder in hide for a in ("--hide", str(folder))]
-        for cell in skip:
-            cmd += ["--skip", str(cell)]
-        hard_limit = options.total_timeout + 150          # kernel starts and the answers' read
-        env = dict(os.environ, TMPDIR=str(tmp), JUPYTER_RUNTIME_DIR=str(tmp / "runtime"),
-                   PYTHONDONTWRITEBYTECODE="1")
-        with open(log, "wb") as err:
-            # TMPDIR: the runner's own files (connection file, kernel spec) land in this private
-            # folder, which goes away even if the runner is killed
-            proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=err,
-                                    start_new_session=True, env=env)
-            try:
-                proc.wait(timeout=hard_limit)
-            except subprocess.TimeoutExpired:
-                os.killpg(proc.pid, signal.SIGKILL)
-                proc.wait()
-            finally:
-                _kill_kernel(pid_file)
-                try:
-                    os.killpg(proc.pid, signal.SIGKILL)          # whatever is left of the runner's session
-                except (ProcessLookupError, PermissionError):
-                    pass
-        if result.exists():
-            try:
-                return json.loads(result.read_text(encoding="utf-8")), None
-            except ValueError:
-                pass
-        try:
-            cell = int(progress.read_text())
-        except (OSError, ValueError):
-            cell = None
-        tail = log.read_bytes()[-300:].decode("utf-8", "replace").strip().splitlines()[-1:] if log.exists() else []
-        why = (f"the runner did not finish in {hard_limit:.0f} s" if proc.returncode in (-9, None)
-               else f"the runner stopped (exit code {proc.returncode})")
-        if cell is not None:
-            why += f" while running cell {cell}"
-        return {"grader_error": why + (f": {tail[0][:150]}" if tail else "")}, cell
-
-
 def grade_submission(staged, options, iso=None, hide=()) -> dict:
-    """Run, read the answers, score in this process: one gradebook row (+ feedback text)."""
+    """Run, read the answers, score in this process: one gradebook row (+ feedback text).
+    With variants (``staged.variant``), against that student's robot."""
     from . import checks
-    from .answers import Answers, Unreadable, parse_json
+    from . import grade_variants as GV
+    from .answers import N_JOINTS, Answers, Unreadable, parse_json
     from .gradebook import PART_COLUMNS, feedback_filename, feedback_text, status_text
 
     started = time.monotonic()
+    info = staged.variant
+    robot = info.robot if info is not None else None
+    if info is not None and info.variant is None:
+        return _not_graded_row(staged, info)
     if staged.copy is None:
         run = {"notebook_error": staged.error}
     else:
@@ -167,20 +81,39 @@ def grade_submission(staged, options, iso=None, hide=()) -> dict:
     answers, problem = Answers(), ""
     if run.get("answers_json"):
         try:
-            answers = parse_json(run["answers_json"])
+            answers = parse_json(run["answers_json"], robot.n if robot is not None else N_JOINTS)
         except ValueError as e:
             problem = f"answers not read: {e}"
-    report = checks.check_all(answers)
+    report = checks.check_all(answers, ref=robot)
     unreadable = [name for name, value in answers.items() if isinstance(value, Unreadable)]
     if unreadable and not problem:
         problem = f"unreadable answers: {', '.join(unreadable)}"
     status = status_text(run, report_answered=answers.answered(), answers_problem=problem)
+    note = GV.status_note(info)
+    if note:
+        status = note if status == "ok" else f"{note}; {status}"
     row = {"submission": staged.submission, "score": f"{report.score:g}", "max_score": report.max_score,
            "status": status, "seconds": f"{time.monotonic() - started:.1f}",
            "feedback": feedback_filename(staged.submission), "file": staged.file, "sha256": staged.sha256}
     for part in report.parts:
         row[PART_COLUMNS[part.key]] = f"{part.score:g}"
-    row["_feedback_text"] = feedback_text(staged.submission, run, report, status)
+    if info is not None:
+        row.update(GV.columns(info))
+    row["_feedback_text"] = feedback_text(staged.submission, run, report, status, GV.feedback_lines(info))
+    return row
+
+
+def _not_graded_row(staged, info) -> dict:
+    """The row of a submission with no variant to grade it against (not run: no marks)."""
+    from . import grade_variants as GV
+    from .checks import POINTS
+    from .gradebook import PART_COLUMNS, feedback_filename
+    status = GV.status_note(info)
+    row = {"submission": staged.submission, "score": "0", "max_score": sum(POINTS.values()), "status": status,
+           "seconds": "0.0", "feedback": feedback_filename(staged.submission), "file": staged.file,
+           "sha256": staged.sha256, **{c: "0" for c in PART_COLUMNS.values()}, **GV.columns(info)}
+    row["_feedback_text"] = (f"Submission: {staged.submission}\nFile: {staged.file}\nStatus: {status}\n\n"
+                             "Not graded: your teacher will look at this submission.\n")
     return row
 
 
@@ -188,11 +121,14 @@ def _error_row(staged, exc) -> dict:
     """The row of a submission the grader itself failed on (it keeps the batch going)."""
     from .checks import POINTS
     from .gradebook import PART_COLUMNS, feedback_filename
+    from .grade_variants import columns
     status = f"grader error: {type(exc).__name__}: {str(exc)[:150]}"
     row = {"submission": staged.submission, "score": "0", "max_score": sum(POINTS.values()), "status": status,
            "seconds": "0", "feedback": feedback_filename(staged.submission), "file": staged.file,
            "sha256": staged.sha256, "_feedback_text": f"Submission: {staged.submission}\nStatus: {status}\n"}
     row.update({c: "0" for c in PART_COLUMNS.values()})
+    if staged.variant is not None:
+        row.update(columns(staged.variant))
     return row
 
 
@@ -227,7 +163,9 @@ STATUS_KINDS = [("ok", "ok"), ("not answered", "not answered"), ("invalid notebo
                 ("output limit", "output limit"), ("kernel died", "kernel died"),
                 ("could not be interrupted", "hung"), ("runner was killed", "runner killed"),
                 ("time limit for the whole", "notebook time limit"), ("answers not read", "answers not read"),
-                ("modifies dhlab", "modifies dhlab"), ("grader error", "grader error")]
+                ("modifies dhlab", "modifies dhlab"), ("grader error", "grader error"),
+                ("variant missing", "variant missing"), ("variant tampered", "variant tampered"),
+                ("variant other_student", "a classmate's variant"), ("student not identified", "student unknown")]
 
 
 def _summary(rows, seconds, jobs) -> str:
@@ -295,7 +233,7 @@ class _Batch:
 
     def _write(self) -> None:
         from .gradebook import write_csv
-        write_csv(self.options.output, self.rows.values())
+        write_csv(self.options.output, self.rows.values(), self.options.columns)
 
 
 def _grade_one(batch, staged, iso, hide):
@@ -335,10 +273,33 @@ def main(argv=None) -> int:
                         help="auto (default): a user per job when run as root, else none; user: refuse to "
                              "grade without it; none: kernels run as the grader's user")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    parser.add_argument("--secret-file", type=Path, default=None,
+                        help="personal variants: the teacher's secret the notebooks were released with; each "
+                             "submission is graded against its student's own robot (without it: the PUMA 560)")
+    parser.add_argument("--release", type=Path, default=None,
+                        help="the folder 'dhlab-assign release' wrote (its _teacher/ holds the roster's variants)")
+    parser.add_argument("--fallback", choices=("roster", "none"), default=None,
+                        help="a missing, tampered or classmate's variant: grade against the roster's variant for "
+                             "the student (roster, the default with --release) or give no marks (none)")
     options = parser.parse_args(argv)
     if options.jobs < 1 or options.timeout <= 0 or options.memory_mb < 256:
         parser.error("-j must be ≥ 1, --timeout > 0 and --memory-mb ≥ 256")
     options.total_timeout = options.total_timeout or 4 * options.timeout
+    if options.secret_file is None and (options.release is not None or options.fallback is not None):
+        parser.error("--release and --fallback grade personal variants: give --secret-file too (the secret "
+                     "the notebooks were released with)")
+    resolve = None
+    if options.secret_file is not None:
+        from . import grade_variants as GV
+        from ..validation import DHLabError
+        try:
+            variant_setup = GV.setup(options.secret_file, options.release, options.fallback)
+        except DHLabError as exc:
+            print(f"dhlab-grade: error: {exc}", file=sys.stderr)
+            return 2
+        resolve = functools.partial(GV.resolve, variant_setup)
+    from .gradebook import COLUMNS, VARIANT_COLUMNS
+    options.columns = VARIANT_COLUMNS if resolve is not None else COLUMNS
     folder = options.submissions
     if not folder.is_dir():
         parser.error(f"{folder} is not a folder")
@@ -354,7 +315,9 @@ def main(argv=None) -> int:
     from .staging import stage_all
     checks.check_all(checks.Answers())            # build the reference before any student code runs
 
-    copies, staged = stage_all(folder, paths)     # every submission copied before any runs
+    copies, staged = stage_all(folder, paths, resolve)   # every submission copied (and its variant checked)
+    for robot in {id(s.variant.robot): s.variant.robot for s in staged if s.variant and s.variant.variant}.values():
+        checks.check_all(checks.Answers(), ref=robot)   # each student's robot built before any code runs
     try:
         try:
             iso = setup(options.jobs, options.isolation)
@@ -364,7 +327,7 @@ def main(argv=None) -> int:
         if iso.why:
             print(f"Note: {iso.note()}", file=sys.stderr)
         feedback_dir.mkdir(parents=True, exist_ok=True)
-        old = read_csv(options.output) if options.resume else []
+        old = read_csv(options.output, options.columns) if options.resume else []
         current = {(s.submission, s.sha256) for s in staged}
         keep = [r for r in old if (r["submission"], r["sha256"]) in current]    # unchanged since graded
         done = {(r["submission"], r["sha256"]) for r in keep}

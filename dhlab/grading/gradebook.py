@@ -24,12 +24,15 @@ import tempfile
 import unicodedata
 from pathlib import Path
 
-__all__ = ["COLUMNS", "PART_COLUMNS", "write_atomic", "write_csv", "read_csv", "feedback_filename", "status_text",
+__all__ = ["COLUMNS", "VARIANT_COLUMNS", "PART_COLUMNS", "write_atomic", "write_csv", "read_csv", "feedback_filename", "status_text",
            "feedback_text"]
 
 PART_COLUMNS = {"part1": "part1_sketch", "part2": "part2_links", "part3": "part3_transforms"}
 COLUMNS = ["submission", "score", "max_score", "status", *PART_COLUMNS.values(), "seconds", "feedback",
            "file", "sha256"]
+# with personal variants (--secret-file) the gradebook has these too, at the end, so that a
+# reader of the first columns reads it as before (see dhlab.grading.grade_variants)
+VARIANT_COLUMNS = COLUMNS + ["variant_status", "variant_source", "variant_family", "variant_id", "signed_for"]
 
 
 def write_atomic(path, text: str) -> None:
@@ -48,23 +51,25 @@ def write_atomic(path, text: str) -> None:
         raise
 
 
-def write_csv(path, rows) -> None:
-    """The gradebook: one row per submission (dicts with the keys of ``COLUMNS``)."""
+def write_csv(path, rows, columns=COLUMNS) -> None:
+    """The gradebook: one row per submission (dicts with the keys of ``columns``:
+    :data:`COLUMNS`, or :data:`VARIANT_COLUMNS` when grading variants)."""
     buffer = io.StringIO()
-    writer = csv.DictWriter(buffer, fieldnames=COLUMNS, extrasaction="ignore")
+    writer = csv.DictWriter(buffer, fieldnames=columns, extrasaction="ignore", restval="")
     writer.writeheader()
     for row in sorted(rows, key=lambda r: r["submission"]):
         writer.writerow(row)
     write_atomic(path, buffer.getvalue())
 
 
-def read_csv(path) -> list:
+def read_csv(path, columns=COLUMNS) -> list:
     """The rows of an existing gradebook (for ``--resume``); [] when there is none or it
-    is not a gradebook of these columns."""
+    is not a gradebook of these columns (one graded with variants is not resumed without
+    them, nor the other way round: every row is graded again)."""
     try:
         with open(path, newline="", encoding="utf-8") as f:
             reader = csv.DictReader(f)
-            if reader.fieldnames != COLUMNS:
+            if reader.fieldnames != list(columns):
                 return []
             return [dict(row) for row in reader]
     except (OSError, csv.Error, UnicodeDecodeError):
@@ -134,9 +139,11 @@ def status_text(run: dict, report_answered: bool, answers_problem: str = "") -> 
     return status
 
 
-def feedback_text(submission: str, run: dict, report, status: str) -> str:
-    """The feedback file of one submission: the score, what happened, every check."""
+def feedback_text(submission: str, run: dict, report, status: str, robot_lines=()) -> str:
+    """The feedback file of one submission: the score, what happened, every check
+    (``robot_lines``: which robot it was graded against, with variants)."""
     lines = [f"Submission: {submission}", f"File: {run.get('file', submission + '.ipynb')}", f"Status: {status}", ""]
+    lines += list(robot_lines)
     lines.append(report.text())
     details = []
     for number, ename, evalue in run.get("errors", []):

@@ -10,7 +10,10 @@ its code cells, numbered as in Jupyter. So:
 * a submission that edits a classmate's file, or its own, while the batch runs
   changes nothing: the copies were made before anything ran;
 * the gradebook records each file's SHA-256, so ``--resume`` regrades a file that
-  changed since its row was written.
+  changed since its row was written;
+* with personal variants (``--secret-file``, :mod:`dhlab.grading.grade_variants`) the
+  notebook's signed record is verified here, in the grader's process, and the copy's
+  "Your robot" cell is rewritten from the variant it will be graded against.
 """
 from __future__ import annotations
 
@@ -32,8 +35,9 @@ class Staged:
     submission: str          # its path under the submissions folder, without .ipynb ('alice/ps8/puma')
     file: str                # the same, with the file's own name ('alice/ps8/puma.ipynb')
     sha256: str              # of the file as handed in
-    copy: Path | None        # the code-only copy, None when the file cannot be run
+    copy: Path | None        # the code-only copy, None when the file cannot be run (or is not run)
     error: str = ""          # why it cannot be run
+    variant: object = None   # with variants: the VariantInfo it is graded by (dhlab.grading.grade_variants)
 
 
 def find_submissions(folder: Path) -> list:
@@ -47,8 +51,10 @@ def find_submissions(folder: Path) -> list:
     return out
 
 
-def stage(path: Path, folder: Path, into: Path, index: int) -> Staged:
-    """Read ``path`` once; write its code-only copy into ``into``."""
+def stage(path: Path, folder: Path, into: Path, index: int, resolve=None) -> Staged:
+    """Read ``path`` once; write its code-only copy into ``into``. ``resolve(notebook,
+    submission file)`` (variants): (the notebook to run, its VariantInfo); a VariantInfo
+    without a variant means the submission is not run."""
     rel = path.relative_to(folder)
     submission, file = rel.with_suffix("").as_posix(), rel.as_posix()
     try:
@@ -61,10 +67,19 @@ def stage(path: Path, folder: Path, into: Path, index: int) -> Staged:
     except NotebookError as e:
         return Staged(submission, file, "", None, str(e))
     digest = hashlib.sha256(raw).hexdigest()
+    info = None
+    if resolve is not None:
+        from .grade_variants import read_notebook
+        nb = read_notebook(raw)
+        prepared, info = resolve(nb, file)
+        if info.variant is None:
+            return Staged(submission, file, digest, None, variant=info)
+        if isinstance(prepared, dict) and prepared is not nb:
+            raw = json.dumps(prepared).encode("utf-8")
     try:
         cells = read_code_cells(raw=raw)
     except NotebookError as e:
-        return Staged(submission, file, digest, None, str(e))
+        return Staged(submission, file, digest, None, str(e), info)
     numbered = dict(cells)
     last = max(numbered, default=0)
     nb = {"nbformat": 4, "nbformat_minor": 5, "metadata": {},
@@ -73,11 +88,11 @@ def stage(path: Path, folder: Path, into: Path, index: int) -> Staged:
                     {"cell_type": "markdown", "metadata": {}, "source": ""} for k in range(1, last + 1)]}
     copy = into / f"{index:05d}.ipynb"
     copy.write_text(json.dumps(nb), encoding="utf-8")
-    return Staged(submission, file, digest, copy)
+    return Staged(submission, file, digest, copy, variant=info)
 
 
-def stage_all(folder: Path, paths) -> tuple:
+def stage_all(folder: Path, paths, resolve=None) -> tuple:
     """(the private folder, [Staged]) for every path, all copied before anything runs."""
     into = Path(tempfile.mkdtemp(prefix="dhlab-grade-copies-"))
     os.chmod(into, 0o700)
-    return into, [stage(p, Path(folder), into, k) for k, p in enumerate(paths)]
+    return into, [stage(p, Path(folder), into, k, resolve) for k, p in enumerate(paths)]
