@@ -4,11 +4,16 @@
 
 In one run, on the same random configurations (within the joint limits):
   dhlab batch      robot.fk(Q) for all N at once
+  no input check   the same compiled kinematics without the boundary check of Q
+                   (dhlab.kinematics.run): what the check costs
   numpy matmul     the usual batched numpy: build (N,4,4) DH matrices, chain with @
   dhlab loop       robot.fk(q) in a Python loop, one configuration at a time
   RTB              roboticstoolbox-python's Puma560().fkine(Q), when it is installed
 Every method's poses are checked against dhlab's before its time is reported.
-Reports the median rate and the spread (min–max) over the repeats, and ratios.
+Reports the median rate and the spread (min–max) over the repeats (run round robin), and ratios.
+Then the boundary check alone (dhlab.validation.check_joint_values) on the same N
+configurations, for the PUMA (6 revolute joints) and seed 002's 4-DOF robot (two
+prismatic joints: the deg() mark and size checks), as a share of fk's time.
 """
 from __future__ import annotations
 
@@ -61,6 +66,7 @@ def main(argv=None):
 
     methods = {}
     methods["dhlab batch"] = (lambda: robot.fk(Q), args.n)
+    methods["no input check"] = (lambda: dhlab.kinematics.run(robot._program, Q), args.n)
     methods["numpy matmul"] = (lambda: numpy_matmul_fk(robot, Q), args.n)
     n_loop = min(args.n, 5_000)
     methods["dhlab loop"] = (lambda: np.array([robot.fk(q) for q in Q[:n_loop]]), n_loop)
@@ -74,26 +80,57 @@ def main(argv=None):
         print("roboticstoolbox-python is not installed: its row is skipped "
               "(pip install roboticstoolbox-python to include it)")
 
+    # round robin: every repeat runs every method once, so a change of the machine's load
+    # (other processes) falls on all of them alike
+    times = {name: [] for name in methods}
+    outputs = {}
+    for _ in range(args.repeat):
+        for name, (fn, count) in methods.items():
+            out, (t,) = timed(fn, 1)
+            times[name].append(t)
+            outputs[name] = out
     results = {}
     for name, (fn, count) in methods.items():
-        out, times = timed(fn, args.repeat if count == args.n else max(3, args.repeat // 2))
-        err = float(np.abs(out - reference[:count]).max())
+        err = float(np.abs(outputs[name] - reference[:count]).max())
         assert err < 1e-9, f"{name} disagrees with dhlab by {err}"
-        rates = sorted(count / t for t in times)
+        rates = sorted(count / t for t in times[name])
         results[name] = {"configs": count, "median_per_s": statistics.median(rates),
                          "min_per_s": rates[0], "max_per_s": rates[-1], "max_abs_diff": err}
 
     ours = results["dhlab batch"]["median_per_s"]
     print(f"PUMA 560 batched forward kinematics, N = {args.n:,} (median of repeats; spread min–max)")
-    print(f"{'method':<14}{'configs':>9}{'configs/s (median)':>22}{'spread':>26}{'dhlab batch is':>18}")
+    print(f"{'method':<16}{'configs':>9}{'configs/s (median)':>22}{'spread':>26}   dhlab batch vs it")
     for name, r in results.items():
         spread = f"{r['min_per_s']:,.0f}–{r['max_per_s']:,.0f}"
-        ratio = "" if name == "dhlab batch" else f"{ours / r['median_per_s']:,.1f}× faster"
-        print(f"{name:<14}{r['configs']:>9,}{r['median_per_s']:>22,.0f}{spread:>26}{ratio:>18}")
+        ratio = ours / r["median_per_s"]
+        text = "" if name == "dhlab batch" else f"{ratio:,.2f}× ({'faster' if ratio >= 1 else 'slower'})"
+        r["dhlab_batch_ratio"] = ratio
+        print(f"{name:<16}{r['configs']:>9,}{r['median_per_s']:>22,.0f}{spread:>26}   {text}")
+    results["boundary check"] = boundary_check(Q, args.repeat, rng)
     if args.json:
         with open(args.json, "w") as fh:
             json.dump(results, fh, indent=1)
     return results
+
+
+def boundary_check(Q, repeat, rng):
+    """check_joint_values alone on N configurations, as a share of robot.fk's time."""
+    from dhlab.validation import check_joint_values
+    out = {}
+    print(f"\nthe boundary check alone (check_joint_values), N = {len(Q):,}")
+    for robot in (dhlab.robots.puma560(), dhlab.robots.seed002_4dof()):
+        lo, hi = robot.qlim.T
+        q = lo + (hi - lo) * rng.random((len(Q), robot.n))
+        t_check, t_fk = [], []
+        for _ in range(repeat):                  # round robin, as above
+            t_check += timed(lambda: check_joint_values(q, robot.links), 1)[1]
+            t_fk += timed(lambda: robot.fk(q), 1)[1]
+        check, fk = statistics.median(t_check), statistics.median(t_fk)
+        kinds = "".join("R" if link.is_revolute else "P" for link in robot.links)
+        out[robot.name] = {"check_s": check, "fk_s": fk, "share": check / fk}
+        print(f"  {robot.name:<28} ({kinds}): check {check * 1e3:7.2f} ms of fk's {fk * 1e3:7.2f} ms "
+              f"({100 * check / fk:.0f} %)")
+    return out
 
 
 if __name__ == "__main__":

@@ -73,7 +73,8 @@ def _scalar_junk():
         ("np.float32(0.5)", np.float32(0.5), False), ("np.int64(1)", np.int64(1), False),
         ("Fraction(1, 3)", Fraction(1, 3), False), ("Decimal('0.25')", Decimal("0.25"), False),
         ("sp.Rational(1, 2)", sp.Rational(1, 2), False), ("pi/4", sp.pi / 4, False),
-        ("np.array(0.5)", np.array(0.5), False), ("[0.5]", [0.5], False), ("np.complex128(0.5+0j)", np.complex128(0.5), False),
+        ("np.array(0.5)", np.array(0.5), False), ("[0.5]", [0.5], False),
+        ("np.complex128(0.5+0j)", np.complex128(0.5), False),
     ]
 
 
@@ -84,7 +85,8 @@ ANGLE_JUNK = [("90 (degrees?)", 90, True), ("-180 (degrees?)", -180.0, True), ("
               ("-deg(45)", -deg(45), False), ("deg(400)", deg(400), True)]
 LENGTH_JUNK = [("deg(30)", deg(30), True), ("-deg(30)", -deg(30), True), ("2*deg(10)", 2 * deg(10), True),
                ("1e308", 1e308, False), ("-1e308", -1e308, False), ("1e300", 1e300, False), ("1000", 1000, False)]
-TEXT_JUNK = [("None", None, True), ("5", 5, True), ("b'x'", b"x", True), ("['a']", ["a"], True), ("nan", float("nan"), True)]
+TEXT_JUNK = [("None", None, True), ("5", 5, True), ("b'x'", b"x", True), ("['a']", ["a"], True),
+             ("nan", float("nan"), True)]
 FLAG_JUNK = [("None", None, True), ("'yes'", "yes", True), ("2", 2, True), ("nan", float("nan"), True),
              ("[True]", [True], True), ("1", 1, False), ("np.True_", np.bool_(True), False)]
 CHOICE_JUNK = [("None", None, True), ("5", 5, True), ("'whatever'", "whatever", True), ("[...]", ["x"], True),
@@ -121,11 +123,13 @@ def q_junk(robot):
         ("datetime array", np.zeros(n).astype("datetime64[s]"), True),
         ("masked array", np.ma.array(zeros, mask=[True] + [False] * (n - 1)), True),
         ("[None]*n", [None] * n, True), ("nan inside", [float("nan")] + zeros[1:], True),
-        ("inf inside", zeros[:-1] + [float("inf")], True), ("nan in a batch row", [zeros, [float("nan")] + zeros[1:]], True),
+        ("inf inside", zeros[:-1] + [float("inf")], True),
+        ("nan in a batch row", [zeros, [float("nan")] + zeros[1:]], True),
         ("'0 0 0'", " ".join(["0"] * n), True), ("dict", dict(enumerate(zeros)), True),
         ("symbols", list(robot.q_symbols), True), ("True inside", [True] + zeros[1:], True),
         ("str inside", ["0"] + zeros[1:], True), ("10**400 inside", [10**400] + zeros[1:], True),
-        ("sp.zoo inside", [sp.zoo] + zeros[1:], True), ("object array of None", np.array([None] * n, dtype=object), True),
+        ("sp.zoo inside", [sp.zoo] + zeros[1:], True),
+        ("object array of None", np.array([None] * n, dtype=object), True),
         ("empty list", [], True), ("(0, n) batch", np.zeros((0, n)), False), ("(1, n) batch", np.zeros((1, n)), False),
         ("object zeros", np.zeros(n, dtype=object), False), ("tuple", tuple(zeros), False),
         ("sp.Matrix", sp.Matrix([zeros]), False), ("float32", np.zeros(n, dtype=np.float32), False),
@@ -184,6 +188,9 @@ def matrix_junk(symbolic_ok: bool = False):
     ] + ([("symbolic rigid", dhlab.Rz(X) * dhlab.trans(X, 0, 1), False)] if symbolic_ok else [])
 
 
+# is_rigid() answers False for any real 4x4 that is not rigid; these are not real 4x4s at all
+NOT_A_4X4 = ("nan", "inf", "None", "0", "'eye'", "np.eye(3)", "np.eye(5)", "sp.eye(3)", "sp.eye(5)", "complex", "bool",
+             "object", "ragged", "text", "sp ", "(4, 4, 1)", "datetime", "masked hole", "sp.eye(4)*x")
 # position() and rotation() only read a 4x4: any real 4x4 will do, rigid or not
 MATRIX_SHAPE_OK = ("2*eye", "reflection", "shear", "last row", "sp.eye(4)*x")
 
@@ -201,7 +208,8 @@ def _sym_eye(entry):
 
 
 def robot_junk():
-    return [("None", None, True), ("'puma'", "puma", True), ("5", 5, True), ("[RevoluteDH()]", [dhlab.RevoluteDH()], True),
+    return [("None", None, True), ("'puma'", "puma", True), ("5", 5, True),
+            ("[RevoluteDH()]", [dhlab.RevoluteDH()], True),
             ("{}", {}, True), ("a Link", Link([Rot("z", joint=True)]), True), ("the module robots", robots, True),
             ("robots.puma560 (not called)", robots.puma560, True), ("a DHTable", robots.puma560().table(), True),
             ("np.eye(4)", np.eye(4), True)]
@@ -212,7 +220,8 @@ def qlim_junk(revolute: bool):
            ("(0, 0) empty", (0, 0), True), ("(0, inf)", (0, float("inf")), True), ("(nan, 1)", (float("nan"), 1), True),
            ("(None, 1)", (None, 1), True), ("((0, 1), (0, 1))", ((0, 1), (0, 1)), True), ("[]", [], True),
            ("{}", {}, True), ("(True, 2)", (True, 2), True), ("('0', '1')", ("0", "1"), True),
-           ("(0, 1+1j)", (0, 1 + 1j), True), ("(0, x)", (0, X), True), ("np.array([0, 1])", np.array([0.0, 1.0]), False),
+           ("(0, 1+1j)", (0, 1 + 1j), True), ("(0, x)", (0, X), True),
+           ("np.array([0, 1])", np.array([0.0, 1.0]), False),
            ("(0, 1) ints", (0, 1), False), ("(-0.5, sp.Rational(1, 2))", (-0.5, sp.Rational(1, 2)), False)]
     if revolute:
         out += [("(-100, 100) rad", (-100, 100), True), ("(-180, 180) degrees?", (-180, 180), True),
@@ -358,7 +367,8 @@ def transform_calls():
     good = {"angle": 0.3, "length": 0.5}
     for fn, names, kinds in ((dhlab.Rx, ["alpha"], ["angle"]), (dhlab.Ry, ["beta"], ["angle"]),
                              (dhlab.Rz, ["theta"], ["angle"]), (dhlab.trans, ["x", "y", "z"], ["length"] * 3),
-                             (dhlab.Tz, ["theta", "z"], ["angle", "length"]), (dhlab.Tx, ["alpha", "x"], ["angle", "length"]),
+                             (dhlab.Tz, ["theta", "z"], ["angle", "length"]),
+                             (dhlab.Tx, ["alpha", "x"], ["angle", "length"]),
                              (dhlab.dh_matrix, ["theta", "d", "a", "alpha"], ["angle", "length", "length", "angle"])):
         check = _pose_equal_to_float_version(fn, names, kinds)
         for slot, kind in zip(names, kinds):
@@ -369,7 +379,8 @@ def transform_calls():
                                 (lambda r, a=args, c=check: c(r, a))))
     for fn in (dhlab.deg, dhlab.rad):
         for label, value, refuse in _scalar_junk() + SYMBOLS + LENGTH_JUNK + [
-                ("ragged", [[1, 2], [3]], True), ("nested ok", [[1, 2], [3, 4]], False), ("None in list", [1, None], True),
+                ("ragged", [[1, 2], [3]], True), ("nested ok", [[1, 2], [3, 4]], False),
+                ("None in list", [1, None], True),
                 ("complex array", np.array([1j]), True), ("masked", np.ma.array([1.0, 2], mask=[0, 1]), True)]:
             if fn is dhlab.rad and label.startswith(("deg(", "-deg(", "2*deg")):
                 refuse = False
@@ -379,10 +390,7 @@ def transform_calls():
                             (lambda r, f=fn, v=value: _unit_check(f, v, r))))
     for fn, extra in ((dhlab.inv, {}), (dhlab.rpy, {}), (dhlab.check_rigid, {}), (dhlab.is_rigid, {})):
         for label, value, refuse in matrix_junk(symbolic_ok=fn is dhlab.inv):
-            if fn is dhlab.is_rigid and not label.startswith(("nan", "inf", "None", "0", "'eye'", "np.eye(3)",
-                                                              "np.eye(5)", "sp.eye(3)", "sp.eye(5)", "complex", "bool",
-                                                              "object", "ragged", "text", "sp ", "(4, 4, 1)", "datetime",
-                                                              "masked hole", "sp.eye(4)*x")):
+            if fn is dhlab.is_rigid and not label.startswith(NOT_A_4X4):
                 refuse = False            # a non-rigid matrix is a fine question for is_rigid: the answer is False
             out.append(Call(fn.__name__, "T", label, (lambda f=fn, v=value: f(v)), ("T",), refuse,
                             (lambda r, f=fn, v=value: _matrix_fn_check(f, v, r))))
@@ -481,13 +489,16 @@ def _link_problem(link):
 PARAMS_JUNK = [("'abc'", "abc", True), ("{'l1': None}", {"l1": None}, True), ("{'l1': 'x'}", {"l1": "x"}, True),
                ("{5: 1}", {5: 1}, True), ("{'l1': nan}", {"l1": float("nan")}, True),
                ("{'l1': inf}", {"l1": float("inf")}, True), ("{'l1': x}", {"l1": X}, True),
-               ("[('l1', 1)]", [("l1", 1)], True), ("{'l1': 1j}", {"l1": 1j}, True), ("{'l1': True}", {"l1": True}, True),
+               ("[('l1', 1)]", [("l1", 1)], True), ("{'l1': 1j}", {"l1": 1j}, True),
+               ("{'l1': True}", {"l1": True}, True),
                ("{'l1': 1e400}", {"l1": 10**400}, True), ("{'l1': sp.zoo}", {"l1": sp.zoo}, True),
                ("{'1x': 1}", {"1x": 1}, True), ("{'l1': [1]}", {"l1": [1]}, True),
                ("{'l1': 1e300}", {"l1": 1e300}, False), ("{}", {}, False)]
 SYMBOLS_JUNK = [("5", 5, True), ("'q1'", "q1", True), ("one name", ["q1"], True), ("[None, 'q2']", [None, "q2"], True),
-                ("twice", ["q1", "q1"], True), ("['1a', 'q2']", ["1a", "q2"], True), ("['q 1', 'q2']", ["q 1", "q2"], True),
-                ("{}", {}, True), ("three", ["a", "b", "c"], True), ("[x, x]", [X, X], True), ("['l1', 'q2']", ["l1", "q2"], True),
+                ("twice", ["q1", "q1"], True), ("['1a', 'q2']", ["1a", "q2"], True),
+                ("['q 1', 'q2']", ["q 1", "q2"], True),
+                ("{}", {}, True), ("three", ["a", "b", "c"], True), ("[x, x]", [X, X], True),
+                ("['l1', 'q2']", ["l1", "q2"], True),
                 ("symbols", [sp.Symbol("a"), "b"], False), ("tuple", ("theta1", "theta2"), False)]
 
 
@@ -496,7 +507,8 @@ def robot_calls():
     good_links = [dhlab.RevoluteDH(a=sp.Symbol("l1")), dhlab.PrismaticDH(alpha=deg(90))]
     links_junk = [("None", None, True), ("[]", [], True), ("[None]", [None], True),
                   ("[RevoluteDH(), 5]", [dhlab.RevoluteDH(), 5], True), ("'RR'", "RR", True),
-                  ("one link, not a list", dhlab.RevoluteDH(), True), ("a Link in a DHRobot", [Link([Rot("z", joint=True)])], True),
+                  ("one link, not a list", dhlab.RevoluteDH(), True),
+                  ("a Link in a DHRobot", [Link([Rot("z", joint=True)])], True),
                   ("dict", {1: dhlab.RevoluteDH()}, True), ("5", 5, True), ("np.array(0)", np.array(0), True),
                   ("np object array", np.array([dhlab.RevoluteDH(), dhlab.RevoluteDH()], dtype=object), False),
                   ("generator", (dhlab.RevoluteDH() for _ in range(2)), False)]
@@ -516,7 +528,8 @@ def robot_calls():
     rows_junk = [
         ("None", None, True), ("[]", [], True), ("[[]]", [[]], True), ("3 entries", [("q1", 0, 1)], True),
         ("5 entries", [("q1", 0, 1, 0, 0)], True), ("a string row", ["abcd"], True), ("'q1 0 1 0'", "q1 0 1 0", True),
-        ("None θ", [(None, 0, 1, 0)], True), ("None d", [("q1", None, 1, 0)], True), ("True a", [("q1", 0, True, 0)], True),
+        ("None θ", [(None, 0, 1, 0)], True), ("None d", [("q1", None, 1, 0)], True),
+        ("True a", [("q1", 0, True, 0)], True),
         ("'1/0'", [("q1", 0, "1/0", 0)], True), ("'1e400'", [("q1", 0, "1e400", 0)], True),
         ("nan a", [("q1", 0, float("nan"), 0)], True), ("inf α", [("q1", 0, 1, float("inf"))], True),
         ("deg(90) α in degrees", [("q1", 0, 1, deg(90))], True), ("1e308 α", [("q1", 0, 1, 1e308)], True),
@@ -550,12 +563,15 @@ def robot_calls():
     # Robot: a product of motions per link
     def make_robot(links=(Link([Rot("z", joint=True), Move("x", sp.Symbol("l1"))]),), params=None, joint_symbols=None,
                    name="r"):
-        return Robot(list(links) if isinstance(links, tuple) else links, params={"l1": 0.5} if params is None else params,
-                     joint_symbols=joint_symbols, name=name)
+        return Robot(list(links) if isinstance(links, tuple) else links,
+                     params={"l1": 0.5} if params is None else params, joint_symbols=joint_symbols, name=name)
     robot_links = [(lbl, v, r) for lbl, v, r in links_junk if lbl != "a Link in a DHRobot"] + [
-        ("a RevoluteDH in a Robot", [dhlab.RevoluteDH()], False), ("a Factor, not a Link", [Rot("z", joint=True)], True)]
-    slots = {"links": (robot_links, ("link", "robot")), "params": ([p for p in PARAMS_JUNK if p[0] != "{}"], ("param", "l1")),
-             "joint_symbols": ([(lbl, v, r and lbl != "one name") for lbl, v, r in SYMBOLS_JUNK if lbl not in ("symbols", "tuple")],
+        ("a RevoluteDH in a Robot", [dhlab.RevoluteDH()], False),
+        ("a Factor, not a Link", [Rot("z", joint=True)], True)]
+    names = [(lbl, v, r and lbl != "one name") for lbl, v, r in SYMBOLS_JUNK if lbl not in ("symbols", "tuple")]
+    slots = {"links": (robot_links, ("link", "robot")),
+             "params": ([p for p in PARAMS_JUNK if p[0] != "{}"], ("param", "l1")),
+             "joint_symbols": (names,
                                ("joint_symbols", "joint variable", "l1")), "name": (TEXT_JUNK, ("name",))}
     out += _calls_for("Robot", slots, make_robot, robot_problem)
 
@@ -601,22 +617,28 @@ def method_calls():
         out.append(Call("rrr_example.fk_sym", "simplify", label, (lambda v=value: small.fk_sym(simplify=v)),
                         ("simplify",), refuse, pose_problem))
     for label, value, refuse in TIMEOUT_JUNK:
-        out.append(Call("rrr_example.fk_sym", "timeout", label, (lambda v=value: small.fk_sym(simplify=True, timeout=v)),
+        out.append(Call("rrr_example.fk_sym", "timeout", label,
+                        (lambda v=value: small.fk_sym(simplify=True, timeout=v)),
                         ("timeout",), refuse, pose_problem))
     M = small.fk_sym()
     for fn in (dhlab.compact, dhlab.legend):
         for label, value, refuse in [("None", None, True), ("5", 5, True), ("['q9']", ["q9"], True),
                                      ("[None]", [None], True), ("['1x']", ["1x"], True), ("{}", {}, True),
-                                     ("good names", ["q1", "q2", "q3"], False), ("symbols", list(small.q_symbols), False),
+                                     ("good names", ["q1", "q2", "q3"], False),
+                                     ("symbols", list(small.q_symbols), False),
                                      ("one name as text", "q1", False)]:
             out.append(Call(fn.__name__, "q_symbols", label, (lambda f=fn, v=value: f(M, v)),
                             ("joint variable", "q_symbols", "q"), refuse, None))
-        for label, value, refuse in [("None", None, True), ("5", 5, False), ("'M'", "M", True), ("np.eye(4)", np.eye(4), False),
-                                     ("sp zoo", _sym_eye(sp.zoo), True), ("[[1]]", [[1]], False), ("a robot", small, True)]:
-            out.append(Call(fn.__name__, "M", label, (lambda f=fn, v=value: f(v, small.q_symbols)), ("M",), refuse, None))
+        for label, value, refuse in [("None", None, True), ("5", 5, False), ("'M'", "M", True),
+                                     ("np.eye(4)", np.eye(4), False),
+                                     ("sp zoo", _sym_eye(sp.zoo), True), ("[[1]]", [[1]], False),
+                                     ("a robot", small, True)]:
+            out.append(Call(fn.__name__, "M", label, (lambda f=fn, v=value: f(v, small.q_symbols)), ("M",),
+                            refuse, None))
     for label, value, refuse in [(lbl, v, r) for lbl, v, r in robot_junk()] + [
             ("a DHRobot", small, False), ("a Robot (not DH)", robots.pr_mechanism(), True)]:
-        out.append(Call("DHTable", "robot", label, (lambda v=value: str(dhlab.DHTable(v))), ("DHTable", "DHRobot", "robot"),
+        out.append(Call("DHTable", "robot", label, (lambda v=value: str(dhlab.DHTable(v))),
+                        ("DHTable", "DHRobot", "robot"),
                         refuse, None))
     return out
 
@@ -641,22 +663,29 @@ AXES_GOOD = [((0, 0, 0), (0, 0, 1), "R"), ((1, 0, 0), (0, 0, 1), "R")]
 def assign_calls():
     out = []
     axes_junk = [
-        ("None", None, True), ("[]", [], True), ("'abc'", "abc", True), ("5", 5, True), ("two entries", [((0, 0, 0), (0, 0, 1))], True),
-        ("zero direction", [((0, 0, 0), (0, 0, 0), "R")], True), ("nan point", [((0, 0, float("nan")), (0, 0, 1), "R")], True),
-        ("inf direction", [((0, 0, 0), (0, 0, float("inf")), "R")], True), ("kind 'X'", [((0, 0, 0), (0, 0, 1), "X")], True),
+        ("None", None, True), ("[]", [], True), ("'abc'", "abc", True), ("5", 5, True), ("two entries", [((0, 0, 0),
+        (0, 0, 1))], True),
+        ("zero direction", [((0, 0, 0), (0, 0, 0), "R")], True), ("nan point", [((0, 0, float("nan")),
+        (0, 0, 1), "R")], True),
+        ("inf direction", [((0, 0, 0), (0, 0, float("inf")), "R")], True), ("kind 'X'", [((0, 0, 0),
+        (0, 0, 1), "X")], True),
         ("kind 'r'", [((0, 0, 0), (0, 0, 1), "r")], True), ("kind None", [((0, 0, 0), (0, 0, 1), None)], True),
         ("2-D point", [((0, 0), (0, 0, 1), "R")], True), ("text point", [("000", (0, 0, 1), "R")], True),
         ("None point", [(None, (0, 0, 1), "R")], True), ("complex direction", [((0, 0, 0), (0, 0, 1j), "R")], True),
         ("an entry that is a string", ["abc"], True), ("dict", {"a": 1}, True), ("a robot", robots.puma560(), True),
-        ("1e308 point", [((1e308, 0, 0), (0, 0, 1), "R")], True), ("1e308 direction", [((0, 0, 0), (0, 0, 1e308), "R")], False),
-        ("deg() direction", [((0, 0, 0), deg([0, 0, 90]), "R")], False), ("np arrays", [(np.zeros(3), np.array([0, 0, 1.0]), "R")], False),
-        ("sympy numbers", [((0, 0, 0), (0, 0, sp.Integer(1)), "R")], False), ("x in a point", [((X, 0, 0), (0, 0, 1), "R")], True),
+        ("1e308 point", [((1e308, 0, 0), (0, 0, 1), "R")], True), ("1e308 direction", [((0, 0, 0),
+        (0, 0, 1e308), "R")], False),
+        ("deg() direction", [((0, 0, 0), deg([0, 0, 90]), "R")], False),
+        ("np arrays", [(np.zeros(3), np.array([0, 0, 1.0]), "R")], False),
+        ("sympy numbers", [((0, 0, 0), (0, 0, sp.Integer(1)), "R")], False), ("x in a point", [((X, 0, 0),
+        (0, 0, 1), "R")], True),
         ("nearly parallel", [((0, 0, 0), (0, 0, 1), "R"), ((1, 0, 0), (1e-12, 0, 1), "R")], False),
         ("the same line twice", [((0, 0, 0), (0, 0, 1), "R"), ((0, 0, 1), (0, 0, -1), "P")], False),
     ]
     tool_junk = [("None", None, True), ("(1, 0)", (1, 0), True), ("np.eye(3)", np.eye(3), True), ("'abc'", "abc", True),
                  ("nan point", (float("nan"), 0, 0), True), ("non-rigid", 2 * np.eye(4), True), ("5", 5, True),
-                 ("complex point", (1j, 0, 0), True), ("sympy x", (X, 0, 0), True), ("1e308 point", (1e308, 0, 0), True),
+                 ("complex point", (1j, 0, 0), True), ("sympy x", (X, 0, 0), True),
+                 ("1e308 point", (1e308, 0, 0), True),
                  ("good 4x4", dhlab.trans(2, 0, 0), False), ("good sp.Matrix", sp.Matrix([2, 0, 0]), False)]
     slots = {
         "axes": (axes_junk, ("axes",)), "tool": (tool_junk, ("tool",)),
@@ -709,14 +738,17 @@ def ik_and_lines_calls():
             out.append(Call("ik.pr_mechanism_ik", slot, label, (lambda a=args: dhlab.ik.pr_mechanism_ik(pr, **a)),
                             (f"target {slot}", slot), refuse, (lambda r, a=args: _ik_check(pr, a, r))))
     for label, value, refuse in TOL_JUNK:
-        out.append(Call("ik.pr_mechanism_ik", "tol", label, (lambda v=value: dhlab.ik.pr_mechanism_ik(pr, 1.2, 0.2, tol=v)),
+        out.append(Call("ik.pr_mechanism_ik", "tol", label,
+                        (lambda v=value: dhlab.ik.pr_mechanism_ik(pr, 1.2, 0.2, tol=v)),
                         ("tol",), refuse and label != "0", (lambda r: _ik_check(pr, {"x": 1.2, "y": 0.2}, r))))
-    for label, value, refuse in [("nan", float("nan"), True), ("'1'", "1", True), ("None", None, True), ("1e308", 1e308, True),
+    for label, value, refuse in [("nan", float("nan"), True), ("'1'", "1", True), ("None", None, True),
+                                 ("1e308", 1e308, True),
                                  ("deg(30)", deg(30), True), ("1j", 1j, True), ("x", X, True), ("0.2", 0.2, False)]:
         out.append(Call("ik.pr_mechanism_ik_explained", "y", label,
                         (lambda v=value: dhlab.ik.pr_mechanism_ik_explained(pr, 1.2, v)), ("y",), refuse,
                         lambda r: None if isinstance(r, str) and "nan" not in r else "no text, or nan in it"))
-    for label, value, refuse in robot_junk() + [("{'l1': 1}", {"l1": 1.0}, True), ("{'l1': 1, 'l2': -1}", {"l1": 1, "l2": -1}, True),
+    for label, value, refuse in robot_junk() + [("{'l1': 1}", {"l1": 1.0}, True),
+                                                ("{'l1': 1, 'l2': -1}", {"l1": 1, "l2": -1}, True),
                                                 ("{'l1': 'a', 'l2': 1}", {"l1": "a", "l2": 1}, True),
                                                 ("another robot", robots.rrr_example(), True),
                                                 ("{'l1': nan, 'l2': 1}", {"l1": float("nan"), "l2": 1}, True),
@@ -792,34 +824,40 @@ def catalogue_calls():
 
 def view_calls():
     """The panels, with a few values each (they build figures: slower). Their code is not
-    this sweep's to fix: what fails here is listed in KNOWN below with the file and the fix."""
+    this sweep's to fix: what fails here is listed in KNOWN_RULES below with the file and the fix."""
     out = []
     puma, pr = ROBOTS["puma560"], ROBOTS["pr_mechanism"]
     qs = [("None", None, False), ("'abc'", "abc", True), ("nan inside", [float("nan")] + [0.0] * 5, True),
-          ("5 values", [0.0] * 5, True), ("90 (degrees?)", [90.0] + [0.0] * 5, True), ("a batch", np.zeros((2, 6)), True),
-          ("complex", np.zeros(6, dtype=complex), True), ("1e308", [1e308] + [0.0] * 5, True)]
+          ("5 values", [0.0] * 5, True), ("90 (degrees?)", [90.0] + [0.0] * 5, True),
+          ("a batch", np.zeros((2, 6)), True), ("complex", np.zeros(6, dtype=complex), True),
+          ("1e308", [1e308] + [0.0] * 5, True)]
     for name, fn in (("teach", dhlab.teach), ("robot_view", dhlab.robot_view)):
         for label, value, refuse in qs:
             out.append(Call(name, "q", label, (lambda f=fn, v=value: f(puma, v)), ("q",), refuse, None))
         for label, value, refuse in robot_junk()[:6]:
             out.append(Call(name, "robot", label, (lambda f=fn, v=value: f(v)), ("robot",), refuse, None))
+        for label, value, refuse in FIGSIZE_JUNK:
+            out.append(Call(name, "figsize", label, (lambda f=fn, v=value: f(puma, figsize=v)), ("figsize",),
+                            refuse, None))
     for label, value, refuse in [("None", None, False), ("'abc'", "abc", True), ("[0.5]", [0.5], True),
                                  ("deg() on the slider", [deg(10), deg(30)], True), ("nan", [float("nan"), 0.1], True)]:
         out.append(Call("spaces", "q", label, (lambda v=value: dhlab.spaces(pr, v)), ("q",), refuse, None))
     for label, value, refuse in INDEX_JUNK:
-        out.append(Call("stepthrough_link", "i", label, (lambda v=value: dhlab.stepthrough_link(puma, v)), ("i", "link"),
-                        refuse, None))
+        out.append(Call("stepthrough_link", "i", label, (lambda v=value: dhlab.stepthrough_link(puma, v)),
+                        ("i", "link"), refuse, None))
     for slot in ("theta_deg", "d", "a", "alpha_deg"):
         for label, value, refuse in [("None", None, True), ("'abc'", "abc", True), ("nan", float("nan"), True),
                                      ("inf", float("inf"), True), ("1j", 1j, True), ("x", X, True)]:
             out.append(Call("stepthrough", slot, label, (lambda s=slot, v=value: dhlab.stepthrough(**{s: v})),
                             (slot,), refuse, None))
-    for label, value, refuse in [("None", None, True), ("'M'", "M", True), ("5", 5, False), ("sp zoo", _sym_eye(sp.zoo), True),
-                                 ("np.eye(4)", np.eye(4), False)]:
-        out.append(Call("show_matrix", "M", label, (lambda v=value: dhlab.show_matrix(v)), ("M", "matrix"), refuse, None))
-    for label, value, refuse in [("None", None, True), ("'big'", "big", True), ("-1", -1, True), ("nan", float("nan"), True),
-                                 ("1e308", 1e308, True), ("True", True, True)]:
-        out.append(Call("projector", "scale", label, (lambda v=value: dhlab.projector(scale=v)), ("scale",), refuse, None))
+    for label, value, refuse in [("None", None, True), ("'M'", "M", True), ("5", 5, False),
+                                 ("sp zoo", _sym_eye(sp.zoo), True), ("np.eye(4)", np.eye(4), False)]:
+        out.append(Call("show_matrix", "M", label, (lambda v=value: dhlab.show_matrix(v)), ("M", "matrix"),
+                        refuse, None))
+    for label, value, refuse in [("None", None, True), ("'big'", "big", True), ("-1", -1, True),
+                                 ("nan", float("nan"), True), ("1e308", 1e308, True), ("True", True, True)]:
+        out.append(Call("projector", "scale", label, (lambda v=value: dhlab.projector(scale=v)), ("scale",),
+                        refuse, None))
     dhlab.projector(False)
     return out
 
@@ -902,10 +940,15 @@ KNOWN_RULES = [
     ("robots.pr_mechanism", None, MARKED, "dhlab/robots.py", "as_length(l1, 'l1') on every length argument"),
     ("robots.rrr_example", None, MARKED, "dhlab/robots.py", "as_length(l1, 'l1') on every length argument"),
     ("robots.seed002_4dof", None, MARKED, "dhlab/robots.py", "as_length(l1, 'l1') on every length argument"),
-    ("robots.robot_no_tan_elemental_1", None, MARKED, "dhlab/robots.py", "as_length(l1, 'l1') on every length argument"),
+    ("robots.robot_no_tan_elemental_1", None, MARKED, "dhlab/robots.py",
+     "as_length(l1, 'l1') on every length argument"),
     ("DHRobot.from_table", "rows", ("1e308 α", "720 α"), "dhlab/dh.py DHRobot.from_table()",
      "a degree table's angle beyond 360 gets as_angle's radian advice ('pass dhlab.deg(12.5664)'): check "
      "|value| ≤ 360 in degrees first and name the row: 'row 1, α = 720° is more than a full turn'"),
+    ("teach", "figsize", ("0",), "dhlab/views/view.py:191 RobotView.__init__",
+     "figsize or self._figsize() takes figsize=0 (or ()) for the default: use "
+     "self._figsize() if figsize is None else figsize"),
+    ("robot_view", "figsize", ("0",), "dhlab/views/view.py:191 RobotView.__init__", "as for teach"),
     ("show_matrix", "M", ("sp zoo",), "dhlab/views/matrices.py show_matrix()",
      "refuse entries with nan, zoo or oo (validation._real(e, where, symbolic=True))"),
 ]

@@ -86,9 +86,13 @@ def _real(x, name: str, symbolic: bool = False):
         return _real(x[()], name, symbolic)
     if isinstance(x, (Fraction, Decimal, np.floating, np.integer)) and not isinstance(x, np.bool_):
         try:
-            return float(x)
+            value = float(x)
         except (OverflowError, ValueError):
+            value = math.inf
+        infinite = x.is_infinite() if isinstance(x, Decimal) else isinstance(x, np.floating) and np.isinf(x)
+        if math.isinf(value) and not infinite:          # a finite value too large for a float (Decimal('1e400'))
             raise DHLabError(f"{name} = {describe(x)} is too large to be a number of this course.") from None
+        return value
     if isinstance(x, sp.Basic):
         return _sympy_real(x, name, symbolic)
     raise _not_a_number(x, name)
