@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from dhlab import DHLabError, DHRobot, PrismaticDH, RevoluteDH, robots
+from dhlab import DHLabError, DHRobot, PrismaticDH, RevoluteDH, deg, robots
 from dhlab.assign import dh_assignment, dh_from_axes, joint_axes
 from dhlab.transforms import Rx, trans
 
@@ -440,3 +440,39 @@ def test_degenerate_but_valid_axes_are_chosen_and_reported():
     report = dh_assignment(parallel, (2, 0, 7))
     assert report.cases == [2] and "one is chosen" in report.steps[1].why
 
+
+# --------------------------------------------------------------------------------------
+# found by tests/test_hostile_sweep.py
+# --------------------------------------------------------------------------------------
+@pytest.mark.parametrize("options, message", [
+    (dict(tol="1e-9"), "tol must be a small positive number"),       # text was read by float()
+    (dict(tol=True), "tol must be a small positive number"),
+    (dict(tol=None), "tol must be a small positive number"),
+    (dict(case1=["nearest"]), "case1 must be one of"),               # was TypeError: unhashable
+    (dict(parallel={"a": 1}), "parallel must be one of"),
+    (dict(qlim=np.array(5)), "one (low, high) per joint"),           # was TypeError: len() of 0-d
+])
+def test_bad_options_found_by_the_sweep(options, message):
+    with pytest.raises(DHLabError, match=re.escape(message)):
+        dh_from_axes(GOOD, TOOL, **options)
+
+
+def test_a_prismatic_joints_limits_made_with_deg_are_refused():
+    axes = [((0, 0, 0), (0, 0, 1), "R"), ((1, 0, 0), (1, 0, 0), "P")]
+    with pytest.raises(DHLabError, match=r"qlim\[1\] \(joint 2, prismatic\).*deg\(\)"):
+        dh_from_axes(axes, (2, 0, 0), qlim=[(-1, 1), (0.0, deg(30))])
+    assert dh_from_axes(axes, (2, 0, 0), qlim=[(deg(-90), deg(90)), (0.0, 0.5)]).qlim[1].tolist() == [0.0, 0.5]
+
+
+def test_huge_coordinates_are_refused_and_huge_directions_normalised():
+    with pytest.raises(DHLabError, match=r"axes\[0\] \(joint 1\) point = 1e\+308 is too large for a length"):
+        dh_from_axes([((1e308, 0, 0), (0, 0, 1), "R")], (1, 0, 0))
+    with pytest.raises(DHLabError, match="tool = 1e.308 is too large for a length"):
+        dh_from_axes([((0, 0, 0), (0, 0, 1), "R")], (1e308, 0, 0))
+    far = np.eye(4)
+    far[0, 3] = 1e200
+    with pytest.raises(DHLabError, match=r"tool \(its position\) = 1e\+200 is too large"):
+        dh_from_axes([((0, 0, 0), (0, 0, 1), "R")], far)
+    robot = dh_from_axes([((0, 0, 0), (0, 0, 1e308), "R")], (1, 0, 0))   # a direction: only its sense counts
+    np.testing.assert_allclose(robot.fk(robot.qz), trans(1, 0, 0), atol=1e-12)
+    assert np.isfinite(robot.fk([0.3])).all()

@@ -195,3 +195,41 @@ def test_issue_14_what_is_right_still_works():
     np.testing.assert_allclose(puma.A(2, np.array([0.3])), puma.A(2, 0.3))
     sols = dhlab.ik.pr_mechanism_ik({"l1": 1.0, "l2": 0.5}, 2.0, 0.25, tol=0)
     assert len(sols) == 2
+
+
+# --- found by tests/test_hostile_sweep.py -------------------------------------------------------
+@pytest.mark.parametrize("value", [1e308, -1e308, 1e200])
+def test_a_prismatic_value_too_large_is_refused_not_overflowed(value):
+    robot = robots.seed002_4dof()                       # joints 2 and 3 are prismatic
+    with pytest.raises(DHLabError, match=r"q\[1\] \(joint 2, prismatic\) = .* too large for a length"):
+        robot.fk([0.0, value, 0.0, 0.0])
+    with pytest.raises(DHLabError, match="too large for a length"):
+        robot.fk([[0.0, 0.1, 0.2, 0.0], [0.0, 0.1, value, 0.0]])
+    np.testing.assert_allclose(robot.fk([0.0, 1e100, 0.0, 0.0])[:3, 3].max(), 1e100, rtol=1e-9)
+
+
+def test_a_length_too_large_is_named():
+    from dhlab.validation import LARGEST_LENGTH, as_length
+    assert as_length(LARGEST_LENGTH, "d") == LARGEST_LENGTH
+    for value in (1e200, -1e308, sp.Float("1e300")):
+        with pytest.raises(DHLabError, match=r"^d = .* too large for a length: at most 1e\+150"):
+            as_length(value, "d")
+    with pytest.raises(DHLabError, match="too large for a length"):
+        dhlab.RevoluteDH(a=1e308)
+
+
+def test_a_decimal_too_large_for_a_float_is_named_as_such():
+    from decimal import Decimal
+
+    from dhlab.validation import as_number
+    with pytest.raises(DHLabError, match=r"Decimal\('1E\+400'\) is too large"):
+        as_number(Decimal("1e400"), "x")
+    with pytest.raises(DHLabError, match="x is inf"):
+        as_number(Decimal("Infinity"), "x")
+
+
+def test_dhlab_validation_error_keeps_its_name_and_every_check_stays_importable():
+    import dhlab.validation as validation
+    assert DHLabError.__module__ == "dhlab.validation" and validation.DHLabError is DHLabError
+    assert all(hasattr(validation, name) for name in validation.__all__)
+    from dhlab.validation import _describe, _real, check_joint_values  # noqa: F401 (the old private names too)
