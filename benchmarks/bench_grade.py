@@ -1,6 +1,6 @@
-"""Grading a class: 30 submitted PUMA notebooks with ``dhlab-grade -j 2``, time per submission.
+"""Grading a class: 30 submitted notebooks with ``dhlab-grade -j 2``, time per submission.
 
-    python benchmarks/bench_grade.py [--n 30] [--jobs 2] [--serial 10] [--json out.json]
+    python benchmarks/bench_grade.py [--n 30] [--jobs 2] [--serial 10] [--variants 30] [--json out.json]
 
 The class is made of copies of the course's own notebooks, as students hand them in:
 the solutions, the test submissions with a valid alternative DH assignment and with a
@@ -10,16 +10,25 @@ The grader runs as it would for a teacher: as root it isolates each kernel (its 
 mount namespace, processes killed afterwards), and the run says which mode it measured.
 
 In one run, side by side:
-  -j 2     all N submissions, two at a time (the target: under 2 minutes for 30)
-  -j 1     the first ``--serial`` of them, one at a time (for the ratio)
-Each run checks that every submission got the score its kind should get before its time
-is reported.
+  -j 2            all N submissions, two at a time (the target: under 2 minutes for 30)
+  -j 1            the first ``--serial`` of them, one at a time (for the ratio)
+  variants -j 2   a class of ``--variants`` students with personal robots (``dhlab-assign
+                  release --family all``), graded with ``--secret-file --release``: each
+                  notebook solved with its robot's reference DH frames, with another valid
+                  assignment, with the chain out of order (one item), left unanswered, or
+                  handed in by a classmate (graded against the roster's variant); the
+                  target is the same, under 2 minutes for 30
+Each run checks that every submission got the score (and the variant status) its kind
+should get before its time is reported. The release is not timed (bench_release.py).
 """
 from __future__ import annotations
 
 import argparse
+import contextlib
 import csv
+import io
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -51,20 +60,78 @@ def make_class(folder: Path, n: int) -> dict:
     return expected
 
 
-def grade(folder: Path, jobs: int, expected: dict) -> float:
+def make_variant_class(folder: Path, n: int) -> tuple:
+    """A released class of n students, each handing in a solved notebook of one kind in turn;
+    returns (extra grader arguments, expected score or (status, max score) per submission)."""
+    import numpy as np
+    sys.path.insert(0, str(ROOT / "tests"))
+    from test_grade_variants import released_robot, solved
+    from dhlab.course.family_model import random_valid_frames
+    from dhlab.grading import release as R
+    secret = folder.parent / "secret.key"
+    secret.write_bytes(b"benchmark-secret-0123456789abcdef\n")
+    ids = [f"student_{i + 1:02d}" for i in range(n)]
+    roster = folder.parent / "roster.csv"
+    roster.write_text("id\n" + "\n".join(ids) + "\n", encoding="utf-8")
+    release = folder.parent / "release"
+    with contextlib.redirect_stdout(io.StringIO()):
+        R.release(roster, release, secret.read_bytes().strip(), "all")
+    nbs = {sid: json.loads((release / f"{sid}.ipynb").read_text(encoding="utf-8")) for sid in ids}
+    expected = {}
+    for i, sid in enumerate(ids):
+        nb, robot, kind = nbs[sid], released_robot(nbs[sid]), i % 5
+        if kind == 0:
+            nb, want = solved(nb, robot), 10.0
+        elif kind == 1:
+            nb, want = solved(nb, robot, random_valid_frames(robot, np.random.default_rng(i))), 10.0
+        elif kind == 2:                                  # the chain out of order: one item of part 3
+            nb = solved(nb, robot)
+            cell = next(c for c in nb["cells"] if c.get("metadata", {}).get("nbgrader", {}).get("grade_id")
+                        == "part3_answers")
+            cell["source"] = cell["source"].replace("chain = T1 @ T2", "chain = T2 @ T1")
+            want = round(10 - 5 / (robot.n + 1), 2)
+        elif kind == 3:
+            want = 0.0                                   # handed in as released: not answered
+        else:                                            # a classmate's solved notebook
+            other = ids[i - 1]
+            nb, want = solved(nbs[other], released_robot(nbs[other])), ("other_student", 7.0)
+        (folder / f"{sid}.ipynb").write_text(json.dumps(nb), encoding="utf-8")
+        expected[sid] = want
+    return ["--secret-file", str(secret), "--release", str(release)], expected
+
+
+def package_copy(into: Path) -> Path:
+    """dhlab copied where every user can read it: the grader watches its package for changes
+    during a batch, and this working tree may be edited meanwhile (the kernels' users import it)."""
+    shutil.copytree(ROOT / "dhlab", into / "dhlab", ignore=shutil.ignore_patterns("__pycache__"))
+    for path in [into, *into.rglob("*")]:
+        path.chmod(0o755 if path.is_dir() else 0o644)
+    return into
+
+
+def grade(folder: Path, jobs: int, expected: dict, extra=(), package: Path | None = None) -> float:
     """Seconds for one `dhlab-grade` run (a fresh process, as a teacher runs it)."""
     out = folder.parent / f"gradebook-j{jobs}.csv"
+    env = dict(os.environ, PYTHONPATH=str(package)) if package else None
     started = time.perf_counter()
     proc = subprocess.run([sys.executable, "-m", "dhlab.grading.cli", "puma", str(folder), "-o", str(out),
-                           "-j", str(jobs), "-q"], capture_output=True, text=True)
+                           "-j", str(jobs), "-q", *extra], capture_output=True, text=True, env=env,
+                          cwd=package)
     seconds = time.perf_counter() - started
     if proc.returncode != 0:
         raise SystemExit(f"dhlab-grade failed:\n{proc.stderr[-2000:]}")
     if "not isolated" in proc.stderr:
         print("(measured without isolation: " + proc.stderr.split("not isolated:", 1)[1].splitlines()[0].strip() + ")")
     with open(out, newline="", encoding="utf-8") as f:
-        scores = {row["submission"]: float(row["score"]) for row in csv.DictReader(f)}
-    wrong = {k: (scores.get(k), v) for k, v in expected.items() if abs(scores.get(k, -1) - v) > 0.01}
+        rows = {row["submission"]: row for row in csv.DictReader(f)}
+    scores = {k: float(row["score"]) for k, row in rows.items()}
+    wrong = {}
+    for k, v in expected.items():
+        if isinstance(v, tuple):                         # (variant status, a score it stays under)
+            if k not in rows or rows[k].get("variant_status") != v[0] or scores[k] >= v[1]:
+                wrong[k] = (rows.get(k, {}).get("variant_status"), scores.get(k), v)
+        elif abs(scores.get(k, -1) - v) > 0.01:
+            wrong[k] = (scores.get(k), v)
     if wrong:
         raise SystemExit(f"wrong scores (got, expected): {wrong}")
     return seconds
@@ -75,30 +142,39 @@ def main(argv=None) -> int:
     parser.add_argument("--n", type=int, default=30, help="submissions (default 30)")
     parser.add_argument("--jobs", type=int, default=2, help="parallel jobs of the main run (default 2)")
     parser.add_argument("--serial", type=int, default=10, help="submissions for the -j 1 run (0: skip)")
+    parser.add_argument("--variants", type=int, default=30,
+                        help="students of the personal-variants run (0: skip)")
     parser.add_argument("--json", type=Path, default=None, help="write the results here")
     args = parser.parse_args(argv)
     results = {}
+    runs = [(f"-j {args.jobs}", args.jobs, args.n, False), ("-j 1", 1, args.serial, False),
+            (f"variants -j {args.jobs}", args.jobs, args.variants, True)]
     with tempfile.TemporaryDirectory(prefix="bench-grade-") as tmp:
         tmp = Path(tmp)
-        for label, jobs, n in ((f"-j {args.jobs}", args.jobs, args.n), ("-j 1", 1, args.serial)):
+        tmp.chmod(0o755)
+        package = package_copy(tmp / "package")
+        for label, jobs, n, variants in runs:
             if n <= 0:
                 continue
-            folder = tmp / f"class-j{jobs}"
-            folder.mkdir()
-            expected = make_class(folder, n)
-            seconds = grade(folder, jobs, expected)
+            folder = tmp / label.replace(" ", "_").replace("-", "") / "class"
+            folder.mkdir(parents=True)
+            extra, expected = make_variant_class(folder, n) if variants else ((), make_class(folder, n))
+            seconds = grade(folder, jobs, expected, extra, package)
             results[label] = {"submissions": n, "seconds": round(seconds, 2),
                               "seconds_per_submission": round(seconds / n, 3)}
-    print(f"{'run':<8} {'submissions':>11} {'total [s]':>10} {'per submission [s]':>19}")
+    print(f"{'run':<13} {'submissions':>11} {'total [s]':>10} {'per submission [s]':>19}")
     for label, r in results.items():
-        print(f"{label:<8} {r['submissions']:>11} {r['seconds']:>10.1f} {r['seconds_per_submission']:>19.2f}")
-    if len(results) == 2:
-        a, b = results.values()
+        print(f"{label:<13} {r['submissions']:>11} {r['seconds']:>10.1f} {r['seconds_per_submission']:>19.2f}")
+    if f"-j {args.jobs}" in results and "-j 1" in results:
+        a, b = results[f"-j {args.jobs}"], results["-j 1"]
         print(f"ratio: -j 1 takes {b['seconds_per_submission'] / a['seconds_per_submission']:.2f}x "
-              f"as long per submission as {list(results)[0]}")
-    main_run = results[f"-j {args.jobs}"]
-    verdict = "under" if main_run["seconds"] < 120 else "OVER"
-    print(f"{args.n} submissions with -j {args.jobs}: {main_run['seconds']:.1f} s ({verdict} the 2-minute target)")
+              f"as long per submission as -j {args.jobs}")
+    for label in (f"-j {args.jobs}", f"variants -j {args.jobs}"):
+        if label in results:
+            r = results[label]
+            verdict = "under" if r["seconds"] < 120 * r["submissions"] / 30 else "OVER"
+            print(f"{label}: {r['submissions']} submissions in {r['seconds']:.1f} s "
+                  f"({verdict} the 2-minute target for 30)")
     if args.json:
         args.json.write_text(json.dumps(results, indent=2), encoding="utf-8")
     return 0
