@@ -340,6 +340,19 @@ def test_a_classmates_solution_does_not_pass(key):
         assert report.score < 7 and report.part("part3").score < 5 and report.part("part2").score < 3
 
 
+def test_coincident_axes_are_case_2():
+    """The SCARA's quill slides along the line its tool turns about: "parallel" (case 2, the
+    notebook's word) or "coincident" are right for x3, "intersect" is not; and since a sliding
+    joint's axis may be drawn on any parallel line, "coincident" is right for joints 2 and 3 too."""
+    robot = V.robot_of_variant(V.variant("cobra600", 1))
+    ns = _student_namespace(robot, robot.home_frames)
+    assert ns["x_cases"] == ["parallel", "parallel", "parallel"]
+    for words, lost in ((["parallel", "coincident", "coincident"], []), (["parallel", "parallel", "intersect"], ["x3"]),
+                        (["coincident", "parallel", "parallel"], ["x1"])):
+        part1 = _report(dict(ns, x_cases=words), robot).part("part1")
+        assert [item.label for item in part1.items if not item.ok] == lost
+
+
 # --- mistakes: each one costs exactly its item ----------------------------------------------------
 
 def _moves_like(robot, rows, Q) -> bool:

@@ -175,6 +175,8 @@ def check_part1(answers: Answers, ref=None) -> PartResult:
         label = f"x{i}"
         expected = puma.relation(ref.axes[i - 1], ref.axes[i]).kind
         accepted = {expected, "parallel"} if expected == "coincident" else {expected}   # case 2 covers both
+        if expected == "parallel" and "P" in ref.kinds[i - 1:i + 1]:
+            accepted.add("coincident")          # a sliding joint's axis may be drawn on the other line
         if cases is NOT_ANSWERED or (isinstance(cases, list) and (i > len(cases) or cases[i - 1] is None)):
             items.append(Item(label, None, "not answered"))
         elif isinstance(cases, Unreadable):
