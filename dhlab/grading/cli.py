@@ -309,7 +309,7 @@ def main(argv=None) -> int:
         return 2
     feedback_dir = options.feedback_dir or options.output.with_name(options.output.stem + "_feedback")
 
-    from . import checks
+    from . import checks, grade_variants  # noqa: F401  (imported before any student code runs)
     from .gradebook import read_csv
     from .isolation import file_digests, setup
     from .staging import stage_all
