@@ -19,6 +19,7 @@ same forward-kinematics code (:mod:`dhlab.kinematics`).
 from __future__ import annotations
 
 import functools
+import time
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -323,12 +324,15 @@ class Robot:
         """
         simplify = as_flag(simplify, "simplify")
         timeout = as_timeout(timeout)
+        start = time.monotonic()                  # the timeout counts building the blocks too
         base, tool = exact(sp.Matrix(self.base)), exact(sp.Matrix(self.tool))
         if simplify:
             # DH robots merge parallel joints before multiplying; other chains
             # collapse the sums of angles afterwards.
-            return simplify_chain(self._sym_blocks(), base, tool, self.q_symbols,
-                                  sum_angles=not self.merges_parallel_joints, timeout=timeout)
+            blocks = self._sym_blocks()
+            left = None if timeout is None else timeout - (time.monotonic() - start)
+            return simplify_chain(blocks, base, tool, self.q_symbols,
+                                  sum_angles=not self.merges_parallel_joints, timeout=left)
         return chain_product([base] + self.link_matrices_sym() + [tool])
 
     merges_parallel_joints = False   # DHRobot writes parallel joints' angle sums directly

@@ -109,13 +109,14 @@ class DHRobot(Robot):
     def _sym_blocks(self):
         """Link matrices, with each run of revolute joints about parallel axes
         (α = 0 between them) written as one block in the sums of their angles."""
+        matrices = self.link_matrices_sym()          # once: each call builds all n
         blocks, i = [], 0
         while i < self.n:
             j = i
             while (j + 1 < self.n and self.links[j].is_revolute and self.links[j + 1].is_revolute
                    and exact_angle(self.links[j].alpha) == 0):
                 j += 1
-            blocks.append(self._run_block(i, j) if j > i else self.link_matrices_sym()[i])
+            blocks.append(self._run_block(i, j) if j > i else matrices[i])
             i = j + 1
         return blocks
 
@@ -237,9 +238,21 @@ def _parse(value, where: str, degrees: bool = False):
         except (sp.SympifyError, SyntaxError, TypeError, ValueError, AttributeError, ZeroDivisionError):
             raise DHLabError(f"{where}: cannot read {value!r} as a number or an expression like 'q2 + 90'.") from None
     if isinstance(value, sp.Basic):
-        return as_number(value, where, symbolic=True)
-    number = as_number(value, where)
-    return sp.nsimplify(number) if number.is_integer() else sp.Float(number)
+        value = as_number(value, where, symbolic=True)
+    else:
+        number = as_number(value, where)
+        value = sp.nsimplify(number) if number.is_integer() else sp.Float(number)
+    if degrees:
+        _check_degrees(value, where)
+    return value
+
+
+def _check_degrees(value, where: str) -> None:
+    """An angle of a degree table (its constant part, as in 'q2 + 90') is at most a full turn."""
+    constant = value.as_coeff_Add()[0]
+    if constant.is_number and abs(float(constant)) > 360:
+        raise DHLabError(f"{where} = {float(constant):g}° is more than a full turn: this table's angles are "
+                         "degrees, from -360 to 360 (720° is the same as 0°). Check the number.")
 
 
 def _joint_symbol(expr, params):

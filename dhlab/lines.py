@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .validation import DHLabError, as_float_array
+from .validation import DHLabError, as_float_array, as_number, check_length_size
 
 __all__ = ["Line", "LineRelation", "relation", "closest_points"]
 
@@ -54,13 +54,14 @@ class Line:
     direction: np.ndarray
 
     def __post_init__(self):
-        point = _vector3(self.point, "Line point")
+        point = _vector3(self.point, "Line point", length=True)
         direction = _vector3(self.direction, "Line direction")
-        length = float(np.linalg.norm(direction))
-        if length < 1e-12:
+        largest = float(np.abs(direction).max())      # divided first: the square of 1e308 overflows
+        scaled = direction / largest if largest else direction
+        if largest * float(np.linalg.norm(scaled)) < 1e-12:
             raise DHLabError(f"Line direction is {_short(self.direction)}: a line needs a non-zero direction "
                              "vector, e.g. (0, 0, 1) for a line along z.")
-        direction = direction / length
+        direction = scaled / np.linalg.norm(scaled)
         point.setflags(write=False)
         direction.setflags(write=False)
         object.__setattr__(self, "point", point)
@@ -68,12 +69,12 @@ class Line:
 
     def nearest_point(self, p) -> np.ndarray:
         """The point of the line nearest ``p``: the foot of the perpendicular from ``p``."""
-        w = _vector3(p, "p") - self.point
+        w = _vector3(p, "p", length=True) - self.point
         return self.point + (w @ self.direction) * self.direction
 
     def distance_to_point(self, p) -> float:
         """The distance from ``p`` to the line (along the perpendicular)."""
-        w = _vector3(p, "p") - self.point
+        w = _vector3(p, "p", length=True) - self.point
         return float(np.linalg.norm(w - (w @ self.direction) * self.direction))
 
     def __repr__(self) -> str:
@@ -197,7 +198,8 @@ def _as_line(x, name: str) -> Line:
     """A :class:`Line` from a Line or a (point, direction) pair, or a DHLabError."""
     if isinstance(x, Line):
         return x
-    if isinstance(x, (str, bytes)) or not hasattr(x, "__len__") or len(x) != 2:
+    if (isinstance(x, (str, bytes)) or (isinstance(x, np.ndarray) and x.ndim == 0)   # 0-d: len() fails
+            or not hasattr(x, "__len__") or len(x) != 2):
         raise DHLabError(f"line {name} must be a dhlab.lines.Line or a (point, direction) pair, "
                          f"e.g. ((0, 0, 0), (0, 0, 1)); got {_short(x)}.")
     return Line(*x)
@@ -208,8 +210,8 @@ def _read_tol(tol, angle_tol) -> tuple:
     for name, value, upper, hint in (("tol", tol, math.inf, "a length, e.g. 1e-9"),
                                      ("angle_tol", angle_tol, math.pi / 2, "radians, e.g. 1e-9")):
         try:
-            number = float(value)
-        except (TypeError, ValueError):
+            number = as_number(value, name)       # refuses text ('1e-9') and True, as float() does not
+        except DHLabError:
             number = math.nan
         if not 0 <= number < upper:
             raise DHLabError(f"{name} must be a number ≥ 0 ({hint}"
@@ -218,13 +220,16 @@ def _read_tol(tol, angle_tol) -> tuple:
     return tuple(values)
 
 
-def _vector3(value, name: str) -> np.ndarray:
-    """A copy of ``value`` as 3 finite floats, or a DHLabError naming ``name``."""
+def _vector3(value, name: str, length: bool = False) -> np.ndarray:
+    """A copy of ``value`` as 3 finite floats, or a DHLabError naming ``name``; with ``length``
+    (a point) each coordinate at most LARGEST_LENGTH, so that distances stay finite."""
     arr = np.array(as_float_array(value, name), dtype=float)
     if arr.shape != (3,):
         raise DHLabError(f"{name} must be 3 numbers (x, y, z), got shape {arr.shape}: {_short(value)}.")
     if not np.isfinite(arr).all():
         raise DHLabError(f"{name} is {arr.tolist()}: every coordinate must be a finite number.")
+    if length:
+        check_length_size(float(np.abs(arr).max()), name)
     return arr
 
 

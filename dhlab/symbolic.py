@@ -179,6 +179,21 @@ def _compact_name(f, q_symbols):
     return ("C" if isinstance(f, sp.cos) else "S") + joiner.join(labels)
 
 
+def _check_finite_entries(M, who: str) -> None:
+    """Refuse a matrix or expression holding nan, zoo or ±oo, naming the first such entry."""
+    from .validation import DHLabError, describe
+    bad = (sp.nan, sp.zoo, sp.oo, -sp.oo)
+    if not M.has(*bad):
+        return
+    if isinstance(M, sp.MatrixBase):
+        i, j = next((i, j) for i in range(M.rows) for j in range(M.cols) if M[i, j].has(*bad))
+        where = f"M[{i}, {j}] = {describe(M[i, j])}"
+    else:
+        where = f"M = {describe(M)}"
+    raise DHLabError(f"{who}: {where} is not finite: every entry of M must be a finite expression "
+                     "(no nan, oo or zoo; check for a division by zero, e.g. 1/cos(q) at q = pi/2).")
+
+
 def _joint_arguments(M, q_symbols, who: str):
     """``M`` as a sympy object and the joint symbols as the symbols of ``M`` (names accepted)."""
     from .validation import DHLabError, describe
@@ -191,6 +206,7 @@ def _joint_arguments(M, q_symbols, who: str):
                          f"got {describe(M)}.") from None
     if not isinstance(M, (sp.Expr, sp.MatrixBase)):
         raise DHLabError(f"{who}: M must be a sympy Matrix or expression, got {describe(M)}.")
+    _check_finite_entries(M, who)
     q_symbols = list(q_symbols) if isinstance(q_symbols, (list, tuple)) else [q_symbols]
     by_name = {s.name: s for s in M.free_symbols if isinstance(s, sp.Symbol)}
     out = []

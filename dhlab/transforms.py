@@ -32,7 +32,7 @@ import numpy as np
 import sympy as sp
 
 from .validation import (DHLabError, as_angle, as_length, as_matrix4, as_sym_matrix4,
-                         as_tolerance, rigid_problem)
+                         as_text, as_tolerance, rigid_problem)
 
 __all__ = [
     "Rx", "Ry", "Rz", "trans", "Tr", "Tz", "Tx", "dh_matrix",
@@ -149,6 +149,7 @@ def is_rigid(T, tol: float = 1e-9) -> bool:
 
 def check_rigid(T, name: str = "T", tol: float = 1e-9) -> np.ndarray:
     """Return ``T`` as a float array, or raise DHLabError saying what is wrong with it."""
+    name = as_text(name, "name")
     tol = as_tolerance(tol, "tol", upper=0.1)
     T = as_matrix4(T, name)
     problem = rigid_problem(T, tol)

@@ -91,6 +91,11 @@ def has_angle_mark(x) -> bool:
     return False
 
 
+def _short(x) -> str:
+    text = repr(x)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
 def _error(message):
     from .validation import DHLabError     # (validation imports this module)
     return DHLabError(message)
@@ -113,6 +118,9 @@ def deg(x):
     """
     if isinstance(x, sp.Expr) and x.free_symbols:
         return x * sp.pi / 180
+    if has_angle_mark(x):
+        raise _error(f"deg(x): x = {_short(x)} is already in radians (it was made by deg()): "
+                     "do not convert twice, use the value as it is.")
     values = _degrees_in(x, "deg(x): x (degrees)")
     if values.ndim == 0:
         return Angle(math.radians(float(values)))
@@ -129,6 +137,9 @@ def rad(x):
     if isinstance(x, sp.Expr) and x.free_symbols:
         return x * 180 / sp.pi
     values = _degrees_in(x, "rad(x): x (radians)")
-    if values.ndim == 0:
-        return math.degrees(float(values))
-    return np.degrees(np.asarray(values, dtype=float))
+    with np.errstate(over="ignore"):
+        degrees = math.degrees(float(values)) if values.ndim == 0 else np.degrees(np.asarray(values, dtype=float))
+    if not np.all(np.isfinite(degrees)):
+        raise _error(f"rad(x): x = {np.abs(values).max():g} rad is too large: in degrees it is more than the "
+                     "largest float. Check the number (an angle of a robot is at most a few turns).")
+    return float(degrees) if values.ndim == 0 else degrees

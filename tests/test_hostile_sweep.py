@@ -916,42 +916,7 @@ GROUPS = {"transforms": transform_calls, "links": link_calls, "robots": robot_ca
 # Failures found by the sweep in modules whose fix belongs to another change (each with the file and
 # the fix; reported on issue 14). A call listed here may fail; once fixed, it simply passes, and
 # its line here can go. (entry, slot, labels — None for every label —, where, the fix)
-MARKED = ("deg(30)", "-deg(30)", "2*deg(10)")
-KNOWN_RULES = [
-    ("deg", "x", MARKED, "dhlab/units.py deg()",
-     "deg() of a value already made by deg() converts twice: refuse it (has_angle_mark): 'x is already in radians'"),
-    ("rad", "x", ("1e308", "-1e308"), "dhlab/units.py rad()",
-     "math.degrees(1e308) is inf: refuse |x| > 1e306 (or check the result is finite)"),
-    ("check_rigid", "name", None, "dhlab/transforms.py check_rigid()", "name = as_text(name, 'name')"),
-    ("compact", "M", ("sp zoo",), "dhlab/symbolic.py _joint_arguments()",
-     "check every entry of M with validation._real(e, where, symbolic=True) (refuses nan, zoo, oo)"),
-    ("legend", "M", ("sp zoo",), "dhlab/symbolic.py _joint_arguments()", "as for compact"),
-    ("lines.Line", "point", ("1e308 inside",), "dhlab/lines.py _vector3()",
-     "check_length_size(np.abs(arr).max(), name) on points (the square of 1e308 overflows)"),
-    ("lines.Line", "direction", ("1e308 inside",), "dhlab/lines.py Line.__post_init__",
-     "divide the direction by its largest entry before np.linalg.norm"),
-    ("Line.distance_to_point", "p", ("1e308 inside",), "dhlab/lines.py _vector3()", "as for Line's point"),
-    ("lines.relation", "b", ("masked", "np.array(0.5)"), "dhlab/lines.py _as_line()",
-     "len() of a 0-d array raises TypeError: test np.ndim(x) == 0 (or catch TypeError) before len(x)"),
-    ("lines.closest_points", "b", ("masked", "np.array(0.5)"), "dhlab/lines.py _as_line()", "as for relation"),
-    ("lines.relation", "tol", ("'1e-9'", "True"), "dhlab/lines.py _read_tol()",
-     "float(tol) reads text and True: use validation.as_tolerance(tol, 'tol', upper=..., zero=True)"),
-    ("lines.relation", "angle_tol", ("'1e-9'", "True"), "dhlab/lines.py _read_tol()", "as for tol"),
-    ("robots.pr_mechanism", None, MARKED, "dhlab/robots.py", "as_length(l1, 'l1') on every length argument"),
-    ("robots.rrr_example", None, MARKED, "dhlab/robots.py", "as_length(l1, 'l1') on every length argument"),
-    ("robots.seed002_4dof", None, MARKED, "dhlab/robots.py", "as_length(l1, 'l1') on every length argument"),
-    ("robots.robot_no_tan_elemental_1", None, MARKED, "dhlab/robots.py",
-     "as_length(l1, 'l1') on every length argument"),
-    ("DHRobot.from_table", "rows", ("1e308 α", "720 α"), "dhlab/dh.py DHRobot.from_table()",
-     "a degree table's angle beyond 360 gets as_angle's radian advice ('pass dhlab.deg(12.5664)'): check "
-     "|value| ≤ 360 in degrees first and name the row: 'row 1, α = 720° is more than a full turn'"),
-    ("teach", "figsize", ("0",), "dhlab/views/view.py:191 RobotView.__init__",
-     "figsize or self._figsize() takes figsize=0 (or ()) for the default: use "
-     "self._figsize() if figsize is None else figsize"),
-    ("robot_view", "figsize", ("0",), "dhlab/views/view.py:191 RobotView.__init__", "as for teach"),
-    ("show_matrix", "M", ("sp zoo",), "dhlab/views/matrices.py show_matrix()",
-     "refuse entries with nan, zoo or oo (validation._real(e, where, symbolic=True))"),
-]
+KNOWN_RULES: list = []     # all fixed (units, transforms, symbolic, lines, robots, dh, views)
 
 
 def known(call: Call):

@@ -36,7 +36,7 @@ import re
 
 import sympy as sp
 
-from ..symbolic import compact, legend
+from ..symbolic import _check_finite_entries, compact, legend
 from ..validation import DHLabError
 
 __all__ = ["show_matrix", "ShownMatrix", "latex_width_px", "PX_PER_EM", "COLUMN_PX"]
@@ -218,14 +218,16 @@ def _symbols_of(symbols, M) -> tuple:
 
 def _as_matrix(M) -> sp.Matrix:
     if isinstance(M, sp.MatrixBase):
-        return sp.Matrix(M)
-    if isinstance(M, (sp.Expr, int, float)) and not isinstance(M, bool):
-        return sp.Matrix([[sp.sympify(M)]])          # one expression: shown without brackets
-    try:
         M = sp.Matrix(M)
-    except Exception:      # sympy raises several kinds for things that are not matrices
-        raise DHLabError(f"show_matrix: expected a sympy Matrix (or a nested list of expressions), "
-                         f"got {type(M).__name__}.") from None
+    elif isinstance(M, (sp.Expr, int, float)) and not isinstance(M, bool):
+        M = sp.Matrix([[sp.sympify(M)]])          # one expression: shown without brackets
+    else:
+        try:
+            M = sp.Matrix(M)
+        except Exception:      # sympy raises several kinds for things that are not matrices
+            raise DHLabError(f"show_matrix: expected a sympy Matrix (or a nested list of expressions), "
+                             f"got {type(M).__name__}.") from None
+    _check_finite_entries(M, "show_matrix")     # no nan, zoo or oo, the entry named
     return M
 
 

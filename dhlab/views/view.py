@@ -188,7 +188,7 @@ class RobotView:
         self.limits = None                    # (lo, hi) of the current frame, when framed
         self._reframed = False
         if ax is None:
-            live = live or LiveFigure(figsize=figsize or self._figsize(), backend=backend)
+            live = live or LiveFigure(figsize=self._figsize() if figsize is None else figsize, backend=backend)
             ax = live.figure.add_subplot(projection=self.projection)
             self.ax, self.live = ax, live
             self._fit(live.figure)
