@@ -1,6 +1,6 @@
 """Grading the PUMA assignment: fair checks, answers as plain data, a sandboxed runner.
 
-* :mod:`dhlab.grading.puma` — the reference robot and the valid DH frames;
+* :mod:`dhlab.grading.puma` / :mod:`dhlab.grading.frames` — the reference robot and the valid DH frames;
 * :mod:`dhlab.grading.answers` — what a submission's answers are, as plain data;
 * :mod:`dhlab.grading.checks` — the fair checks and their feedback;
 * :mod:`dhlab.grading.part3` — each transformation judged against the frame the student meant
@@ -12,8 +12,12 @@
 * :mod:`dhlab.grading.isolation` — the kernels' users, ending every process a submission
   started, and the check that the installed dhlab is unchanged;
 * :mod:`dhlab.grading.gradebook` — the CSV (rewritten after every submission) and feedback files;
+* :mod:`dhlab.grading.variants` / :mod:`dhlab.grading.release` — a personal robot for every student,
+  signed with the teacher's secret (``dhlab-assign release``), and
+  :mod:`dhlab.grading.grade_variants` — each submission graded against its student's own robot;
 * :mod:`dhlab.grading.generate` — the student notebook from the source notebook
   (package data: ``dhlab/grading/data/08_puma_assignment.ipynb``).
 
-The command line is :mod:`dhlab.grading.cli` (``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv``).
+The command line is :mod:`dhlab.grading.cli` (``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv
+[--secret-file KEY --release DIR]``); :mod:`dhlab.grading.launch` starts its runner processes.
 """
