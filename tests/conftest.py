@@ -1,8 +1,11 @@
-"""Shared fixtures (the verified seed cases); nbval's kernels on private Unix sockets.
+"""Shared fixtures (the verified seed cases, one grading batch at a time); nbval's kernels on
+private Unix sockets.
 
 Why the sockets: see tests/kernelsockets.py (the flaky "Kernel didn't respond in 60 seconds").
 """
+import fcntl
 import os
+import tempfile
 
 import pytest
 from hypothesis import settings
@@ -32,3 +35,15 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 @pytest.fixture(scope="session")
 def cases():
     return {c["id"]: c for c in load_cases()}
+
+
+@pytest.fixture(scope="module")
+def one_batch_at_a_time():
+    """Hold a lock while a module grades a class, so the other pytest worker's batch waits.
+
+    Two graders at once are safe (each locks its own kernel users: dhlab.grading.isolation.claim;
+    tests/test_grading_isolation.py proves it), but a test that asserts "no kernel of the grader
+    is left running" cannot tell its own batch's kernels from the other worker's."""
+    with open(os.path.join(tempfile.gettempdir(), "dhlab-tests-one-batch.lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        yield

@@ -128,7 +128,7 @@ def _rows(path) -> dict:
 
 
 @pytest.fixture(scope="module")
-def package():
+def package(one_batch_at_a_time):
     from test_grading_runner import _package_copy
     return _package_copy()
 

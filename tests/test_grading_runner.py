@@ -71,7 +71,7 @@ def _with_big_outputs(src: Path, dst: Path, mb: int) -> None:
 
 
 @pytest.fixture(scope="module")
-def batch(tmp_path_factory):
+def batch(tmp_path_factory, one_batch_at_a_time):
     package = _package_copy()
     folder = tmp_path_factory.mktemp("submitted")
     for path in SUBMISSIONS.glob("*.ipynb"):

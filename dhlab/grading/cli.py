@@ -349,8 +349,10 @@ def main(argv=None) -> int:
     finally:
         import shutil
         shutil.rmtree(copies, ignore_errors=True)
-        if "iso" in locals() and iso.base is not None:
-            shutil.rmtree(iso.base, ignore_errors=True)
+        if "iso" in locals():
+            iso.close()                           # our grading users, free for other graders again
+            if iso.base is not None:
+                shutil.rmtree(iso.base, ignore_errors=True)
     if graded:
         print(_summary(graded, elapsed, iso.jobs), file=sys.stderr)
     if keep:

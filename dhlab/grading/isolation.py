@@ -5,7 +5,10 @@ the submissions (:func:`setup`):
 
 * **as root** (the usual way to grade untrusted work): one unprivileged user per
   parallel job, ``dhlab-grade-1`` … ``dhlab-grade-N``, created on demand (``useradd``;
-  ``nobody`` when users cannot be created, then one job at a time). Each kernel runs
+  ``nobody`` when users cannot be created, then one job at a time). A grader holds a
+  lock on each of its users (:func:`claim`) until it ends, so two graders running at
+  once (two classes, two terminals) never share a user, and neither kills the
+  other's kernels. Each kernel runs
   as its job's user inside a private mount namespace (:mod:`dhlab.grading.sandbox`):
   it cannot write dhlab, see the submissions folder, read the gradebook or the other
   submissions' copies (root's private folders), or signal the grader. After each
@@ -24,12 +27,14 @@ changed.
 """
 from __future__ import annotations
 
+import fcntl
 import hashlib
 import os
 import pwd
 import queue
 import shutil
 import signal
+import stat
 import subprocess
 import sys
 import tempfile
@@ -37,10 +42,11 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-__all__ = ["Isolation", "setup", "kill_user", "kill_token", "fingerprint", "file_digests", "changed_files",
+__all__ = ["Isolation", "setup", "claim", "kill_user", "kill_token", "fingerprint", "file_digests", "changed_files",
            "package_dir", "USER_PREFIX"]
 
 USER_PREFIX = "dhlab-grade-"
+MAX_USERS = 64                                  # dhlab-grade-1 … -64: room for many graders at once
 SANDBOX = Path(__file__).resolve().with_name("sandbox.py")
 
 
@@ -87,6 +93,7 @@ class Isolation:
     users: list = field(default_factory=list)   # (name, uid, gid) per job
     jobs: int = 1
     base: Path | None = None                    # root of the kernels' own folders
+    locks: list = field(default_factory=list, repr=False)   # open descriptors: this grader's claim on its users
     _free: queue.Queue = field(default_factory=queue.Queue, repr=False)
 
     def note(self) -> str:
@@ -95,6 +102,12 @@ class Isolation:
 
     def acquire(self):
         return self._free.get()
+
+    def close(self) -> None:
+        """Give the users back to other graders (the end of the process does it too)."""
+        for fd in self.locks:
+            os.close(fd)
+        self.locks.clear()
 
     def release(self, user) -> None:
         self._free.put(user)
@@ -130,6 +143,41 @@ def _ensure_user(name: str):
     return name, entry.pw_uid, entry.pw_gid
 
 
+def _lock_folder() -> Path:
+    """Root's own folder for the users' locks: only root can create, take or remove a lock."""
+    folder = Path("/run/dhlab-grade") if os.access("/run", os.W_OK) else Path(tempfile.gettempdir(), "dhlab-grade-locks")
+    folder.mkdir(mode=0o700, exist_ok=True)
+    info = folder.lstat()
+    if not stat.S_ISDIR(info.st_mode) or info.st_uid != 0 or info.st_mode & 0o077:
+        raise OSError(f"the lock folder {folder} is not root's own (a folder of mode 0700): remove it and grade again")
+    return folder
+
+
+def claim(name: str, wait: bool = False):
+    """Lock user ``name`` for this grader: an open descriptor (held until closed or the process
+    ends), or None when another grader holds it and ``wait`` is False."""
+    fd = os.open(_lock_folder() / f"{name}.lock", os.O_RDWR | os.O_CREAT | os.O_CLOEXEC | os.O_NOFOLLOW, 0o600)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | (0 if wait else fcntl.LOCK_NB))
+    except BlockingIOError:
+        os.close(fd)
+        return None
+    return fd
+
+
+def _claim_users(iso: Isolation, jobs: int) -> list:
+    """The first ``jobs`` users ``dhlab-grade-K`` no other grader holds, locked and created."""
+    users = []
+    for k in range(1, MAX_USERS + 1):
+        fd = claim(f"{USER_PREFIX}{k}")
+        if fd is not None:
+            iso.locks.append(fd)
+            users.append(_ensure_user(f"{USER_PREFIX}{k}"))
+            if len(users) == jobs:
+                return users
+    raise OSError(f"other graders hold all {MAX_USERS} grading users; wait for one to finish")
+
+
 def _probe(user, base: Path) -> tuple:
     """Run the sandbox's self-test as ``user``: (why it fails or '', what it does not protect or '')."""
     workdir = Path(tempfile.mkdtemp(prefix="probe-", dir=base))
@@ -162,20 +210,24 @@ def setup(jobs: int, mode: str = "auto") -> Isolation:
             raise OSError(iso.why)
     else:
         try:
-            iso.users = [_ensure_user(f"{USER_PREFIX}{k}") for k in range(1, jobs + 1)]
+            iso.users = _claim_users(iso, jobs)
         except OSError as e:
+            iso.close()
             try:
-                iso.users = [("nobody", pwd.getpwnam("nobody").pw_uid, pwd.getpwnam("nobody").pw_gid)]
+                nobody = pwd.getpwnam("nobody")
+                iso.locks.append(claim("nobody", wait=True))     # another grader using nobody: wait for it
+                iso.users = [("nobody", nobody.pw_uid, nobody.pw_gid)]
                 iso.jobs = 1
                 iso.why = f"no user could be created ({e}), so all kernels run as nobody, one at a time"
-            except KeyError:
+            except (KeyError, OSError):
                 iso.why = f"no unprivileged user could be created ({e})"
-        for user in iso.users:                 # a clean slate: nothing left from an earlier, killed batch
+        for user in iso.users:                 # a clean slate: nothing left from an earlier, killed batch of ours
             kill_user(user[1])
         if iso.users:
             fatal, limits = _probe(iso.users[0], base)
             if fatal:
                 iso.users, iso.jobs = [], jobs
+                iso.close()
                 iso.why = f"the sandbox does not hold on this machine: {fatal}"
             else:
                 iso.mode = "user"
