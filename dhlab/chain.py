@@ -19,6 +19,7 @@ same forward-kinematics code (:mod:`dhlab.kinematics`).
 from __future__ import annotations
 
 import functools
+import math
 import time
 from dataclasses import dataclass, field
 
@@ -29,8 +30,8 @@ from . import kinematics
 from .symbolic import chain_product, compact, exact, exact_angle, exact_length, legend, simplify_chain
 from .transforms import Rx, Ry, Rz, trans
 from .units import Angle
-from .validation import (DHLabError, as_angle, as_choice, as_flag, as_index, as_length, as_matrix4,
-                         as_number, as_qlim, as_text, as_timeout, check_joint_values, describe,
+from .validation import (FULL_TURN, DHLabError, as_angle, as_choice, as_flag, as_index, as_length,
+                         as_matrix4, as_number, as_qlim, as_text, as_timeout, check_joint_values, describe,
                          rigid_problem)
 
 __all__ = ["Factor", "Rot", "Move", "Link", "Robot"]
@@ -57,9 +58,8 @@ class Factor:
         as_choice(self.kind, ("R", "T"), "Factor kind ('R' rotation, 'T' translation)")
         as_choice(self.axis, tuple(AXES), "axis")
         object.__setattr__(self, "joint", as_flag(self.joint, "joint"))
-        if isinstance(self.sign, (bool, np.bool_)) or self.sign not in (1, -1):
-            raise DHLabError(f"sign must be +1 or -1, got {describe(self.sign)}.")
         what = "Rot" if self.kind == "R" else "Move"
+        object.__setattr__(self, "sign", _sign(self.sign, what))
         if isinstance(self.value, str):
             raise DHLabError(
                 f"{what}('{self.axis}', {self.value!r}): the amount is text. For a named length or angle use "
@@ -77,11 +77,13 @@ class Factor:
     def matrix(self, q=0):
         """The 4x4 matrix of this motion; sympy (with exact constants) when ``q`` is a symbol."""
         value = self.value
+        if self.joint:
+            q = _joint_value(q, self.kind)
         if isinstance(q, sp.Basic):
             value = exact_angle(value) if self.kind == "R" else exact_length(value)
         amount = value + self.sign * q if self.joint else value
         if self.kind == "R":
-            return (Rx, Ry, Rz)[AXES[self.axis]](amount)
+            return (Rx, Ry, Rz)[AXES[self.axis]](_within_a_turn(amount))
         shift = [0, 0, 0]
         shift[AXES[self.axis]] = amount
         return trans(*shift)
@@ -93,6 +95,33 @@ class Factor:
         if self.joint and self.value != 0:
             amount = f"{var} + {self.value}"
         return f"{name}({amount})"
+
+
+def _sign(sign, what: str) -> int:
+    """+1 or -1 of any numeric type, kept as an int (a sympy or Fraction sign would break fk)."""
+    try:
+        value = as_number(sign, "sign")
+    except DHLabError as error:
+        raise DHLabError(f"{what}(sign=...): sign must be +1 or -1, got {describe(sign)}: {error}") from None
+    if value not in (1.0, -1.0):
+        raise DHLabError(f"{what}(sign=...): sign must be +1 or -1, got {describe(sign)}.")
+    return int(value)
+
+
+def _joint_value(q, kind: str):
+    """One link's joint value: an angle in radians ('R') or a length ('T'); a sympy symbol passes."""
+    if kind == "R":
+        return as_angle(q, "q (the joint angle, in radians)", symbolic=True)
+    return as_length(q, "q (the joint displacement, a length)", symbolic=True)
+
+
+def _within_a_turn(angle):
+    """offset + q may pass a full turn though each is within one: the same rotation, one turn less."""
+    if isinstance(angle, sp.Basic) and angle.free_symbols or abs(float(angle)) <= FULL_TURN:
+        return angle
+    if isinstance(angle, sp.Basic):
+        return angle - sp.sign(angle) * 2 * sp.pi
+    return angle - math.copysign(FULL_TURN, angle)
 
 
 def Rot(axis: str, value=0, joint: bool = False, sign: int = 1) -> Factor:
@@ -132,7 +161,7 @@ class Link:
         self.joint_index = moving[0]
         if self.qlim is None:
             self.qlim = (-np.pi, np.pi) if self.is_revolute else DEFAULT_PRISMATIC_RANGE
-        label = f"qlim of link {self.name}" if self.name else "qlim"
+        label = f"qlim of link {self.name!r}" if self.name else "qlim"
         self.qlim = as_qlim(self.qlim, self.is_revolute, label)
 
     @property
@@ -149,6 +178,7 @@ class Link:
 
     def A(self, q):
         """The link's transform ^{i-1}H_i for joint value ``q`` (symbolic if q is a symbol)."""
+        q = _joint_value(q, self.joint.kind)       # checked before any factor uses it
         M = self.factors[0].matrix(q)
         for f in self.factors[1:]:
             M = M * f.matrix(q) if isinstance(M, sp.MatrixBase) else M @ f.matrix(q)
@@ -215,23 +245,31 @@ class Robot:
             raise DHLabError(f"the robot's {name} transform is not a proper rigid transform: {problem}.")
         return T
 
-    def _number(self, value, where: str) -> float:
-        """A link constant as a float, substituting the robot's parameters."""
-        if isinstance(value, sp.Basic):
-            missing = sorted(str(s) for s in value.free_symbols if str(s) not in self.params)
+    def _number(self, factor: Factor, link: int) -> float:
+        """A factor's constant as a float, substituting the robot's parameters, checked as what it
+        is: an angle for a rotation ('R'), a length for a translation ('T')."""
+        value, kind, where = factor.value, factor.kind, f"link {link} ({factor})"
+        if isinstance(value, sp.Basic) and value.free_symbols:
+            names = sorted(str(s) for s in value.free_symbols)
+            missing = [s for s in names if s not in self.params]
             if missing:
                 raise DHLabError(
                     f"{where} uses {', '.join(missing)}, which has no numeric value: "
                     f"give it in params, e.g. params={{'{missing[0]}': 1.0}}."
                 )
+            angles = [s for s in names if isinstance(self.params[s], Angle)]
+            if kind == "T" and angles:
+                raise DHLabError(f"{where} is a length, but parameter {angles[0]} = {self.params[angles[0]]!r} "
+                                 "is an angle (made by deg()): give it as a plain number.")
             value = value.subs({s: self.params[str(s)] for s in value.free_symbols})
-        return as_number(value, where)
+            where = f"link {link} ({factor}, {', '.join(names)} from params)"
+        return as_angle(value, where) if kind == "R" else as_length(value, where)
 
     def _numeric_factors(self):
         """Per link, its factors with numeric values (what the fast kinematics runs on)."""
         out = []
         for i, link in enumerate(self.links):
-            out.append([(f.kind, AXES[f.axis], self._number(f.value, f"link {i + 1} ({f})"),
+            out.append([(f.kind, AXES[f.axis], self._number(f, i + 1),
                          f.joint, f.sign) for f in link.factors])
         return out
 
@@ -283,7 +321,7 @@ class Robot:
         if q is None:
             return exact(link.A(self.q_symbols[i - 1]))
         values = [0.0] * self.n
-        values[i - 1] = q if np.ndim(q) == 0 else _one_value(q, i)
+        values[i - 1] = _one_value(q, i)
         value = check_joint_values(values, self.links, name=f"q (joint {i})")[i - 1]
         M = np.eye(4)
         for kind, axis, const, joint, sign in self._numeric[i - 1]:
@@ -397,8 +435,15 @@ def _joint_symbols(names, n: int) -> tuple:
 
 
 def _one_value(q, i: int):
-    """A joint value given as a one-element array, or a clear error."""
-    arr = np.asarray(q, dtype=object).ravel() if isinstance(q, (list, tuple, np.ndarray)) else None
+    """The value of joint i: as given, or the element of a one-element list or array (checked later)."""
+    if isinstance(q, np.ma.MaskedArray) and q.size == 1:          # keep a missing value missing
+        return np.ma.masked if np.ma.is_masked(q) else q.data.ravel()[0]
+    if isinstance(q, np.ndarray) and q.ndim == 0 or not isinstance(q, (list, tuple, np.ndarray, sp.MatrixBase)):
+        return q
+    try:
+        arr = None if isinstance(q, sp.MatrixBase) else np.asarray(q, dtype=object).ravel()
+    except (ValueError, TypeError):          # ragged beyond what an object array holds
+        arr = None
     if arr is None or arr.size != 1:
         raise DHLabError(f"q must be one number, the value of joint {i}, got {describe(q)}.")
     return arr[0]
@@ -418,7 +463,8 @@ def _numeric_params(params) -> dict:
         if isinstance(value, sp.Basic) and value.free_symbols or isinstance(value, str):
             raise DHLabError(f"parameter {name} = {value!r} must be a finite number "
                              "(a length or an angle in radians).")
-        out[name] = as_number(value, f"parameter {name}")
+        number = as_number(value, f"parameter {name}")
+        out[name] = value if isinstance(value, Angle) else number   # deg() values stay marked as angles
     return out
 
 

@@ -20,6 +20,7 @@ Tables typed from the slides (degrees, joint variables by name) go through
 """
 from __future__ import annotations
 
+import math
 import re
 
 import numpy as np
@@ -156,6 +157,8 @@ class DHRobot(Robot):
             theta, d, a, alpha = (_parse(v, f"row {i}, {col}", col in "θα" and angles == "deg")
                                   for v, col in zip(row, "θdaα"))
             limits = limits_per_row[i - 1]
+            if angles == "deg":
+                _no_marked_angles(params, {"θ": theta, "α": alpha}, i)
             q = _joint_symbol(theta, params)
             if q is not None:
                 offset = to_rad(_offset(theta, q, f"row {i}, θ"))
@@ -176,6 +179,17 @@ class DHRobot(Robot):
                                  "every joint needs its own (q1, q2, …).")
             symbols.append(str(q))
         return cls(links, name=name, params=params, joint_symbols=symbols, **kwargs)
+
+
+def _no_marked_angles(params, angles: dict, i: int) -> None:
+    """In a table typed in degrees, a deg() parameter in θ or α would be converted twice."""
+    for col, expr in angles.items():
+        for symbol in sorted(expr.free_symbols, key=str):
+            value = params.get(str(symbol))
+            if isinstance(value, Angle):
+                raise DHLabError(f"parameter {symbol} = {value!r} is in row {i}'s {col}, and this table "
+                                 f"is in degrees: give the plain number of degrees ({symbol}={math.degrees(value):g}), "
+                                 "or use angles='rad'.")
 
 
 def _rows(rows) -> list:

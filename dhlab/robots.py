@@ -51,7 +51,7 @@ def robot_no_tan_elemental_2(l: float = 0.70, d_max: float = 0.30) -> Robot:
     ⁰H₁ = Rz(θ)·Tr(0, l, 0), ¹H₂ = Tr(0, d, 0).
     """
     return Robot([Link([Rot("z", joint=True), Move("y", L)], name="link 1"),
-                  Link([Move("y", joint=True)], name="link 2", qlim=(0.0, d_max))],
+                  Link([Move("y", joint=True)], name="link 2", qlim=(0.0, as_length(d_max, "d_max")))],
                  name="robot no tan elemental 2 (seed 004)", params=_lengths(l=l),
                  joint_symbols=("theta", "d"), unit="m")
 

@@ -10,8 +10,8 @@ The feedback machinery, shared by every exercise:
 The exercises:
 
 - :mod:`~dhlab.course.exercises` — notebooks 1-4
-- :mod:`~dhlab.course.exercises_dh` — notebooks 5-7 (``exercises_dh_frames``, ``_links``, ``_ssrms``,
-  ``_common``)
+- :mod:`~dhlab.course.exercises_dh` — notebooks 5-7 (``exercises_dh_frames``, ``_rules``, ``_links``,
+  ``_ssrms``, ``_common``)
 
 The assignment:
 

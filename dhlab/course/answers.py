@@ -8,7 +8,7 @@ large for a float, rows of different lengths.
 
 Symbols are compared by the name the student meant (:func:`canon`): ``θ_0``,
 ``theta_{0}`` and ``theta0`` are the same symbol. :class:`Sampler` evaluates both
-sides at the same random values of their symbols.
+sides at the same values of their symbols, angles over a whole turn.
 
 The decimals the student typed are read too (:func:`typed_decimals`): an answer
 right to the precision typed is not blamed for its rounding.
@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import re
 
 import numpy as np
 import sympy as sp
@@ -32,8 +33,9 @@ from sympy.core.function import AppliedUndef
 __all__ = ["Refused", "is_unanswered", "canon", "Sampler", "close", "to_sympy_matrix", "to_vector",
            "typed_decimals", "rounding_slack"]
 
-SAMPLES = 6              # random points at which symbolic answers are compared
+SAMPLES = 12             # points at which symbolic answers are compared
 BIGGEST = 1e12           # larger numbers are no answer to a kinematics exercise
+MAX_NESTING = 8          # lists inside lists: a matrix has 2 levels; far deeper is no answer
 
 
 class Refused(Exception):
@@ -74,12 +76,27 @@ def canon(symbol) -> str:
     return name.lower()
 
 
+ANGLES = (-math.pi, math.pi)   # a whole turn: cos θ and √(1 − sin²θ) agree only on half of it
+LENGTHS = (0.1, 3.0)           # l1, d, a2, …: a link's length is positive
+
+
+def _is_length(name: str) -> bool:
+    """'l1', 'l', 'd3', 'd', 'a2' (canonical names) are lengths; 'theta0', 'q2', 'alpha', 'a' are not."""
+    return bool(re.fullmatch(r"[ld]\d*|a\d+", name))
+
+
 class Sampler:
-    """Random values for symbols, by canonical name, the same on every run."""
+    """Values for symbols, by canonical name, the same on every run: angles over a whole turn,
+    lengths over (0.1, 3). Each symbol gets one value in each of ``samples`` equal slices of its
+    range, in random order, so no part of the turn is left out."""
 
     def __init__(self, names, samples: int = SAMPLES):
         rng = np.random.default_rng(20240607)
-        self.values = {n: rng.uniform(-1.6, 1.6, samples) for n in sorted(names)}
+        self.values = {}
+        for n in sorted(names):
+            lo, hi = LENGTHS if _is_length(n) else ANGLES
+            slices = rng.permutation(samples) + rng.random(samples)
+            self.values[n] = lo + (hi - lo) * slices / samples
         self.samples = samples
 
     def evaluate(self, M) -> np.ndarray:
@@ -161,7 +178,10 @@ def _entry(v, where: str) -> sp.Expr:
 
 
 def _short(v) -> str:
-    text = repr(v) if not isinstance(v, sp.Basic) else sp.sstr(v)
+    try:
+        text = sp.sstr(v) if isinstance(v, sp.Basic) else repr(v)
+    except Exception:                      # a repr that fails (too deep, or a broken __repr__)
+        text = f"<a {type(v).__name__} that cannot be printed>"
     return text if len(text) <= 40 else text[:37] + "…"
 
 
@@ -201,16 +221,19 @@ def to_sympy_matrix(x, name: str) -> sp.Matrix:
 
 
 # --- vectors ---------------------------------------------------------------------------------------------------
-def _flatten(x) -> list:
+def _flatten(x, depth: int = 0) -> list:
     if isinstance(x, sp.MatrixBase):
         return list(x)
     if isinstance(x, np.ndarray):
         return list(x.ravel()) if x.ndim else [x.item()]
     if isinstance(x, (list, tuple)):
+        if depth > MAX_NESTING:
+            raise Refused(f"your answer is lists inside lists more than {MAX_NESTING} deep: give the numbers "
+                          "as a flat list [a, b, …] (or rows of a matrix).")
         out = []
         for v in x:
             if isinstance(v, (list, tuple, np.ndarray, sp.MatrixBase)):
-                out.extend(_flatten(v))
+                out.extend(_flatten(v, depth + 1))
             else:
                 out.append(v)
         return out

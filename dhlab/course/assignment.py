@@ -32,17 +32,13 @@ dhlab.validation.DHLabError: only the form Tz[θ, d]·Tx[α, a] is allowed (seed
 """
 from __future__ import annotations
 
-import math
-import numbers
-import re
-
 import numpy as np
 
 from ..grading import answers as _answers
 from ..grading import checks as _checks
 from ..grading import puma as _puma
-from ..units import is_angle
-from ..validation import DHLabError
+from ..validation import DHLabError, describe
+from . import assignment_inputs as _inputs
 from .assignment_views import Note, current_robot, my_robot_figure, puma_figure, robot_of, teach
 
 __all__ = ["joint_variables", "Tz", "Tx", "JointTerm", "ZFactor", "XFactor", "DHTransform", "DHChain",
@@ -53,33 +49,6 @@ __all__ = ["joint_variables", "Tz", "Tx", "JointTerm", "ZFactor", "XFactor", "DH
 
 # --- the joint variables and the two factors -------------------------------------------------
 
-def _degrees(value, what: str) -> float:
-    """A number typed in degrees (a value made by dhlab.deg() is converted back)."""
-    if is_angle(value):
-        return math.degrees(float(value))
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        try:
-            value = float(value)            # numpy / sympy numbers
-        except (TypeError, ValueError):
-            raise DHLabError(f"{what} must be a number of degrees, got {value!r}.") from None
-    if not math.isfinite(float(value)):
-        raise DHLabError(f"{what} must be a finite number of degrees, got {value!r}.")
-    return float(value)
-
-
-def _length(value, what: str) -> float:
-    if is_angle(value):
-        raise DHLabError(f"{what} is a length, but you gave an angle ({value!r}): give metres.")
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        try:
-            value = float(value)
-        except (TypeError, ValueError):
-            raise DHLabError(f"{what} must be a number (metres), got {value!r}.") from None
-    if not math.isfinite(float(value)):
-        raise DHLabError(f"{what} must be a finite length, got {value!r}.")
-    return float(value)
-
-
 class JointTerm:
     """``±q_j + constant``: a joint variable with a constant offset (degrees for θ, metres for d).
 
@@ -89,17 +58,16 @@ class JointTerm:
     """
 
     def __init__(self, joint: int, sign: int = 1, const: float = 0.0):
-        self.joint, self.sign, self.const = int(joint), int(sign), float(const)
+        self.joint, self.sign = _inputs.joint_number(joint), _inputs.sign(sign)
+        self.const = _inputs.constant(const, f"the constant of q{self.joint}")
 
     def _shift(self, number, sign_of_number=1):
         if isinstance(number, JointTerm):
             raise DHLabError("θ_i holds one joint variable, q_i, plus a constant: "
                              f"{self!r} and {number!r} cannot be added.")
-        if is_angle(number):
-            number = math.degrees(float(number))
-        if isinstance(number, bool) or not isinstance(number, numbers.Real):
-            raise DHLabError(f"add a number (degrees) to {self!r}, not {number!r}.")
-        return JointTerm(self.joint, self.sign, self.const + sign_of_number * float(number))
+        number = _inputs.degrees(number, f"the number added to {self!r}",     # a deg() value: back to degrees
+                                 unit="angle (degrees) or length (metres)")
+        return JointTerm(self.joint, self.sign, self.const + sign_of_number * number)
 
     def __add__(self, number):
         return self._shift(number)
@@ -113,15 +81,16 @@ class JointTerm:
         return (-self)._shift(number)
 
     def __neg__(self):
-        return JointTerm(self.joint, -self.sign, -self.const)
+        return JointTerm(self.joint, -self.sign, 0.0 - self.const)      # 0.0 - 0.0 is +0.0: never "-0°"
 
     def __pos__(self):
         return self
 
     def __mul__(self, factor):
-        if factor in (1, -1):
-            return self if factor == 1 else -self
-        raise DHLabError(f"θ_i = ±q_i + constant: the joint variable cannot be multiplied by {factor!r}.")
+        unit = _inputs.unit_factor(factor)
+        if unit is not None:
+            return self if unit == 1 else -self
+        raise DHLabError(f"θ_i = ±q_i + constant: the joint variable cannot be multiplied by {describe(factor)}.")
 
     __rmul__ = __mul__
 
@@ -134,25 +103,7 @@ class JointTerm:
 
 def joint_variables(n: int = 6) -> tuple:
     """The joint variables q1…qn (physical joint angles, measured from the home pose)."""
-    return tuple(JointTerm(j) for j in range(1, n + 1))
-
-
-_TERM_TEXT = re.compile(r"^\s*(?:(?P<c1>[+-]?\s*\d+(?:\.\d*)?)\s*)?(?P<s>[+-])?\s*q(?P<j>\d+)\s*"
-                        r"(?:(?P<c2>[+-]\s*\d+(?:\.\d*)?)\s*)?$")
-
-
-def _term_from_text(value, what: str):
-    """'q2 + 90', '-q3', '90 - q2' (or a sympy expression printed so) -> JointTerm."""
-    text = str(value).replace("−", "-").replace("°", "")
-    m = _TERM_TEXT.match(text)
-    if not m or (m["c1"] and m["c2"]) or (m["c1"] and not m["s"]):
-        raise DHLabError(f"{what} must be a number or ±q_i + a constant, like q2 + 90, got {value!r}.")
-    const = float((m["c1"] or m["c2"] or "0").replace(" ", ""))
-    return JointTerm(int(m["j"]), -1 if m["s"] == "-" else 1, const)
-
-
-def _is_text(value) -> bool:
-    return isinstance(value, str) or (hasattr(value, "free_symbols") and bool(value.free_symbols))
+    return tuple(JointTerm(j) for j in range(1, _inputs.joint_count(n) + 1))
 
 
 class ZFactor:
@@ -162,12 +113,12 @@ class ZFactor:
     """
 
     def __init__(self, theta, d):
-        if _is_text(theta):
-            theta = _term_from_text(theta, "θ in Tz[θ, d]")
-        if _is_text(d):
-            d = _term_from_text(d, "d in Tz[θ, d]")
-        self.theta = theta if isinstance(theta, JointTerm) else _degrees(theta, "θ in Tz[θ, d]")
-        self.d = d if isinstance(d, JointTerm) else _length(d, "d in Tz[θ, d]")
+        if _inputs.is_text(theta):
+            theta = JointTerm(*_inputs.term_parts(theta, "θ in Tz[θ, d]"))
+        if _inputs.is_text(d):
+            d = JointTerm(*_inputs.term_parts(d, "d in Tz[θ, d]"))
+        self.theta = theta if isinstance(theta, JointTerm) else _inputs.degrees(theta, "θ in Tz[θ, d]")
+        self.d = d if isinstance(d, JointTerm) else _inputs.length(d, "d in Tz[θ, d]")
 
     def __matmul__(self, other):
         if isinstance(other, XFactor):
@@ -188,7 +139,7 @@ class XFactor:
         if isinstance(alpha, JointTerm) or isinstance(a, JointTerm):
             raise DHLabError("α and a are constants of the link: the joint variable goes in Tz "
                              "(in θ for a revolute joint).")
-        self.alpha, self.a = _degrees(alpha, "α in Tx[α, a]"), _length(a, "a in Tx[α, a]")
+        self.alpha, self.a = _inputs.degrees(alpha, "α in Tx[α, a]"), _inputs.length(a, "a in Tx[α, a]")
 
     def __matmul__(self, other):
         raise DHLabError("only the form Tz[θ, d]·Tx[α, a] is allowed (seed 000): "
@@ -214,6 +165,9 @@ class DHTransform:
     """One ``T_i = Tz[θ_i, d_i]·Tx[α_i, a_i]``; ``T_i @ T_j`` starts a chain."""
 
     def __init__(self, z: ZFactor, x: XFactor):
+        if not isinstance(z, ZFactor) or not isinstance(x, XFactor):
+            raise DHLabError("a transformation is Tz(θ, d) @ Tx(α, a); DHTransform(z, x) takes a Tz and a Tx, "
+                             f"got {type(z).__name__} and {type(x).__name__}.")
         self.z, self.x = z, x
 
     def __matmul__(self, other):
@@ -239,10 +193,14 @@ class DHTransform:
                 return exact(part) * unit
             return transforms.Tz(sym(theta, sp.pi / 180), sym(d, 1)) * transforms.Tx(
                 sym(self.x.alpha, sp.pi / 180), sym(self.x.a, 1))
-        return _checks._matrix(self._row(), float(q))
+        row = self._row()
+        return _checks._matrix(row, _inputs.joint_value(q, row.joint[2]))
 
     def _row(self):
-        return _answers.parse_answers({"T1": _answers.to_plain(self)}).T[0]
+        row = _answers.parse_answers({"T1": _answers.to_plain(self)}).T[0]
+        if not isinstance(row, _answers.Row):       # only if its fields were changed after Tz/Tx checked them
+            raise DHLabError(f"{self!r} cannot be read: {getattr(row, 'why', row)}.")
+        return row
 
     def __repr__(self):
         return f"{self.z!r}·{self.x!r}"
@@ -252,7 +210,14 @@ class DHChain:
     """The chain ``T1·T2···Tn`` (the seed's ``THList`` product)."""
 
     def __init__(self, transforms):
-        self.transforms = list(transforms)
+        try:
+            transforms = list(transforms)
+        except TypeError:
+            transforms = [transforms]
+        if not all(isinstance(t, DHTransform) for t in transforms):
+            raise DHLabError("a chain is a list of transformations T_i = Tz(θ, d) @ Tx(α, a) "
+                             "(write T1 @ T2 @ ...).")
+        self.transforms = transforms
 
     def __matmul__(self, other):
         if isinstance(other, DHTransform):
@@ -283,11 +248,11 @@ class DHChain:
 
 
 def _frames_of(rows, q) -> np.ndarray:
-    q = np.asarray(q, float)
+    q = _inputs.chain_joint_values(q, rows)          # q[i - 1] is q_i: one value per joint variable
     F = [np.eye(4)]
     for row in rows:
         j = row.joint[0]
-        value = q[j - 1] if j is not None and j <= len(q) else 0.0
+        value = q[j - 1] if j is not None else 0.0
         F.append(F[-1] @ _checks._matrix(row, value))
     return np.array(F)
 
@@ -333,8 +298,7 @@ def check_part(part: int, namespace) -> Feedback:
     (:func:`current_robot`). The answers are read by name — n_links, n_joints,
     joint_types, x_cases (part 1), link_points (part 2), T1…Tn and chain (part 3) —
     exactly as the grader reads them."""
-    if part not in (1, 2, 3):
-        raise DHLabError(f"the assignment has parts 1, 2 and 3 to check, not {part!r}.")
+    part = _inputs.part_number(part)
     if not hasattr(namespace, "keys"):
         raise DHLabError("pass the notebook's variables: check_part(1, globals()).")
     ref = current_robot()

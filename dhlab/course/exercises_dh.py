@@ -2,10 +2,11 @@
 
 Built on :mod:`dhlab.course.exercises` (its :class:`~dhlab.course.exercises.Feedback`,
 :class:`~dhlab.course.exercises.Exercise`, ``check_matrix`` and ``check_value``), with
-the checks that need the geometry of DH frames, in three modules re-exported here:
+the checks that need the geometry of DH frames, in four modules re-exported here:
 
-* :mod:`~dhlab.course.exercises_dh_frames`: notebook 5 (5.1 the case of each x_i, 5.2 a row
-  from two frames, 5.3 and 6.3 whole tables);
+* :mod:`~dhlab.course.exercises_dh_rules`: notebook 5 (5.1 the case of each x_i, 5.2 a row
+  from two frames);
+* :mod:`~dhlab.course.exercises_dh_frames`: notebook 5's exercise arm, and whole tables (5.3, 6.3);
 * :mod:`~dhlab.course.exercises_dh_links`: notebook 6 (6.1 a link matrix, 6.2 the wrist centre);
 * :mod:`~dhlab.course.exercises_dh_ssrms`: notebook 7 (7.1-7.3, the SSRMS's C++ program).
 
@@ -24,8 +25,8 @@ from __future__ import annotations
 from ..validation import DHLabError
 from .exercises import Exercise
 from .exercises_dh_common import ANGLE_TOL, Relation, axis_relation
-from .exercises_dh_frames import (ROW_EXERCISE, check_dh_row, check_table, check_x_cases, compare_robots,
-                                  four_axis_arm, row_exercise_frames, show_axes)
+from .exercises_dh_frames import check_table, compare_robots, four_axis_arm, show_axes
+from .exercises_dh_rules import ROW_EXERCISE, check_dh_row, check_x_cases, row_exercise_frames
 from .exercises_dh_links import WRIST_Q_DEG, check_link_matrix, check_wrist_centre, link_exercise_robot
 from .exercises_dh_ssrms import (check_key_jump, check_parallel_pairs, check_thlist_slots, parallel_pairs,
                                  printed_key_position, thlist_slot)

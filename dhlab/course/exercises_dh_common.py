@@ -12,9 +12,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..chain import Robot
 from ..lines import Line, relation
+from ..validation import DHLabError, as_index, describe
 from .answers import Refused, is_unanswered, to_vector
 from .exercises import NOT_ANSWERED, Feedback
+from .feedback import short_repr
 
 ANGLE_TOL = 0.5          # degrees: typed answers are read to half a degree
 
@@ -45,6 +48,11 @@ def _num(x: float, digits: int = 4) -> str:
     if "." in text:
         text = text.rstrip("0").rstrip(".")
     return "0" if text == "-0" else text
+
+
+def _short(value) -> str:
+    """A student's value quoted in a message (at most 40 characters; never raises)."""
+    return short_repr(value, 40)
 
 
 def _vec(v, digits: int = 3) -> str:
@@ -78,6 +86,23 @@ def _whole_number(value):
     if isinstance(value, (float, np.floating)) and math.isfinite(value) and float(value).is_integer():
         return int(value)
     return None
+
+
+# --- the teacher's arguments of a check -----------------------------------------------------------
+def _as_robot(robot, name: str = "robot", kind=Robot, joints: int = 1):
+    """``robot`` checked: a dhlab robot of class ``kind`` with at least ``joints`` joints."""
+    if not isinstance(robot, kind):
+        raise DHLabError(f"{name} must be a dhlab {kind.__name__}, e.g. dhlab.robots.ssrms(), "
+                         f"got {describe(robot)}.")
+    if robot.n < joints:
+        raise DHLabError(f"{name} has {robot.n} joint{'s' if robot.n != 1 else ''}; this check needs "
+                         f"at least {joints}.")
+    return robot
+
+
+def _as_samples(samples, seed):
+    """How many random configurations (1 … 100000), and the seed of their generator (a whole number ≥ 0)."""
+    return as_index(samples, "samples", 1, 100_000), as_index(seed, "seed", 0, 2 ** 63 - 1)
 
 
 # --- lines in space (the geometry is dhlab.lines) ----------------------------------------------

@@ -1,9 +1,10 @@
-"""Exercises of notebook 5 (and the table of 6.3): the case of each x_i, a DH row from two frames,
-a whole DH table checked fairly.
+"""Exercises of notebook 5 (and the table of 6.3): the exercise arm, and a whole DH table checked fairly.
+The case of each x_i (5.1) and a DH row from two frames (5.2) are in :mod:`~dhlab.course.exercises_dh_rules`.
 
 DH frames are not unique (seed 002 lists the free choices), so a table is never compared with one
 answer key: :func:`check_table` compares what every valid answer shares, the joint axes as
-directed lines in space and the end effector's position, at q = 0 and at 50 random configurations.
+directed lines in space, the end effector's position and its z axis (rule 9: z_n along z_(n−1)),
+at q = 0 and at 50 random configurations.
 """
 from __future__ import annotations
 
@@ -15,14 +16,12 @@ import sympy as sp
 from .. import robots
 from ..dh import DHRobot
 from ..lines import Line, closest_points
-from ..transforms import Rx, Rz, dh_matrix, trans
-from ..validation import DHLabError
+from ..validation import DHLabError, as_flag, describe
 from .exercises import Feedback
-from .exercises_dh_common import (ANGLE_TOL, Relation, _axes_of, _blank, _num, _read_numbers, _right,
-                                  _row_of, _unanswered, _vec, _whole_number, _wrong, axis_relation)
+from .exercises_dh_common import (ANGLE_TOL, _as_robot, _as_samples, _axes_of, _blank, _num, _right, _row_of,
+                                  _short, _unanswered, _vec, _wrong, axis_relation)
 
-__all__ = ["four_axis_arm", "show_axes", "check_x_cases", "ROW_EXERCISE", "row_exercise_frames",
-           "check_dh_row", "compare_robots", "check_table"]
+__all__ = ["four_axis_arm", "show_axes", "compare_robots", "check_table"]
 
 
 # --- the exercise robot of notebook 5 --------------------------------------------------------
@@ -66,192 +65,19 @@ def show_axes(axes, tool=None, ax=None, length: float = 0.3, title: str = ""):
     return ax
 
 
-# --- 5.1: the case of each x_i ------------------------------------------------------------------
-_CASE_WORDS = (("intersec", "intersect"), ("corta", "intersect"), ("parallel", "parallel"),
-               ("parale", "parallel"), ("skew", "skew"), ("cruza", "skew"), ("coinciden", "coincident"),
-               ("same line", "coincident"))
-_SAID = {"intersect": "z{p} and z{i} intersect", "parallel": "z{p} and z{i} are parallel",
-         "skew": "z{p} and z{i} are skew", "coincident": "z{p} and z{i} are the same line"}
-
-
-def _read_case(value):
-    """'intersect' / 'parallel' / 'skew' / 'coincident' from a word (English or Spanish),
-    'case 2', 'caso 2' or a whole number 1-3; None when it cannot be read."""
-    number = _whole_number(value)
-    if number is not None:
-        return {1: "intersect", 2: "parallel", 3: "skew"}.get(number)
-    if not isinstance(value, str):
-        return None
-    text = value.strip().lower()
-    for stem, kind in _CASE_WORDS:
-        if stem in text:
-            return kind
-    for digit, kind in (("1", "intersect"), ("2", "parallel"), ("3", "skew")):
-        if text in (digit, f"case {digit}", f"caso {digit}"):
-            return kind
-    return None
-
-
-def _refutation(said: str, rel: Relation) -> str:
-    """Why the relation the student said is not the one of z_(i-1) and z_i, without naming the
-    right one (that is the exercise): the test their claim fails."""
-    if said in ("intersect", "coincident"):
-        return f"they do not meet: the shortest distance between the two lines is {_num(rel.distance)}, not 0."
-    if said == "parallel":
-        return (f"they do not point the same way: their directions are "
-                f"{_num(min(rel.angle, 180 - rel.angle), 1)}° apart.")
-    return "they lie in one plane, and skew lines never do (look at their directions, then at whether they meet)."
-
-
-def _case_key(key):
-    """A key of the answer dict as the number i of x_i: 1, '1', 'x1' -> 1; None otherwise."""
-    number = _whole_number(key)
-    if number is not None:
-        return number
-    if isinstance(key, str):
-        text = key.strip().lower().lstrip("x").strip("_ ")
-        return int(text) if text.isdigit() else None
-    return None
-
-
-def check_x_cases(answer, robot=None) -> Feedback:
-    """Check which case places x_i, i = 1 … n−1: ``{i: 'intersect' | 'parallel' | 'skew'}``
-    (or 'case 1' …, or a list in the order x1, x2, …). Default robot: :func:`four_axis_arm`.
-
-    A wrong case is refuted (the test the claimed relation fails), not corrected: the
-    feedback never states the right case.
-    """
-    robot = four_axis_arm() if robot is None else robot
-    count = robot.n - 1
-    name = f"the cases of x1 … x{count}"
-    if _blank(answer):
-        return _unanswered(name)
-    if isinstance(answer, (list, tuple)):
-        answer = dict(enumerate(answer, start=1))
-    if not isinstance(answer, dict):
-        return _wrong(name, [f"give a dict {{i: case}} for i = 1 … {count}, e.g. {{1: 'parallel', …}}, "
-                             f"not a {type(answer).__name__}."])
-    given = {}
-    for key, value in answer.items():
-        i = _case_key(key)
-        if i is None or not 1 <= i <= count:
-            return _wrong(name, [f"{key!r} is not one of the x_i asked: the keys are 1 … {count}."])
-        given[i] = value
-    missing = [i for i in range(1, count + 1) if i not in given]
-    if missing:
-        return _wrong(name, [f"say the case of every x_i, i = 1 … {count}: x{missing[0]} is missing."])
-    points, dirs = _axes_of(robot, robot.qz)
-    items = []
-    for i in range(1, count + 1):
-        said = _read_case(given[i])
-        if said is None:
-            shown = repr(given[i])
-            shown = shown if len(shown) <= 40 else shown[:37] + "…"
-            items.append(f"x{i}: cannot read {shown}: write 'intersect', 'parallel' or 'skew' "
-                         "(or 'case 1', 'case 2', 'case 3').")
-            continue
-        rel = axis_relation(points[i - 1], dirs[i - 1], points[i], dirs[i])
-        if rel.kind == "coincident" and said in ("coincident", "parallel", "intersect"):
-            continue
-        if said != rel.kind:
-            items.append(f"x{i}: you said {_SAID[said].format(p=i - 1, i=i)}, but "
-                         f"{_refutation(said, rel)}")
-    return _wrong(name, items) if items else _right(name)
-
-
-# --- 5.2: one DH row from two frames ---------------------------------------------------------------
-ROW_EXERCISE = (120.0, 0.3, 0.4, -90.0)       # θ, d, a, α of the hidden link (degrees, metres)
-
-
-def row_exercise_frames():
-    """The two frames of exercise 5.2: ({S_(i-1)}, {S_i}) in the world, 4x4 each."""
-    theta, d, a, alpha = ROW_EXERCISE
-    before = Rz(math.radians(30)) @ trans(0.2, -0.1, 0.3) @ Rx(math.radians(90))
-    return before, before @ dh_matrix(math.radians(theta), d, a, math.radians(alpha))
-
-
-def _angle_diff(a: float, b: float) -> float:
-    """a − b in degrees, wrapped into (−180, 180]."""
-    d = (a - b) % 360.0
-    return d - 360.0 if d > 180.0 else d
-
-
-def _true_row(before, after):
-    A = np.linalg.solve(before, after)
-    theta = math.atan2(A[1, 0], A[0, 0])
-    alpha = math.atan2(A[2, 1], A[2, 2])
-    a = A[0, 3] * math.cos(theta) + A[1, 3] * math.sin(theta)
-    if not np.allclose(dh_matrix(theta, A[2, 3], a, alpha), A, atol=1e-9):
-        raise DHLabError("these two frames are not related by a DH link: x_i must cross z_(i-1) at a "
-                         "right angle.")
-    return math.degrees(theta), float(A[2, 3]), float(a), math.degrees(alpha)
-
-
-def check_dh_row(answer, frames=None) -> Feedback:
-    """Check a DH row ``(θ, d, a, α)`` (angles in **degrees**) that carries ``frames[0]`` =
-    {S_(i-1)} onto ``frames[1]`` = {S_i} (default: :func:`row_exercise_frames`)."""
-    name = "your row (θ, d, a, α)"
-    before, after = row_exercise_frames() if frames is None else frames
-    if _blank(answer):
-        return _unanswered(name)
-    values, problem = _read_numbers(answer, 4, "(θ, d, a, α), angles in degrees")
-    if problem:
-        return _wrong(name, [problem])
-    theta, d, a, alpha = values
-    t_theta, t_d, t_a, t_alpha = _true_row(before, after)
-    scale = max(1.0, abs(t_d), abs(t_a))
-    near = lambda x, y: abs(x - y) <= 1e-3 * scale
-    same_angle = lambda x, y: abs(_angle_diff(x, y)) <= ANGLE_TOL
-    if not (near(d, t_d) and near(a, t_a)) and near(d, t_a) and near(a, t_d):
-        return _wrong(name, ["d and a are swapped: the columns are θ, d, a, α; d is measured along "
-                             "z_(i−1), a along x_i."])
-    items = []
-    if not same_angle(theta, t_theta):
-        hint = ""
-        if same_angle(theta, -t_theta):
-            hint = " Check the sense: positive is counter-clockwise seen from the tip of z_(i−1)."
-        elif same_angle(theta + 180, t_theta):
-            hint = " It is 180° off: your x_i points the other way."
-        items.append(f"θ: turning x_(i−1) by your θ = {_num(theta)}° about z_(i−1) does not make it "
-                     f"parallel to x_i (rule 10).{hint}")
-    if not near(d, t_d):
-        hint = " The sign: d is positive towards +z_(i−1)." if near(d, -t_d) else ""
-        items.append(f"d: your d = {_num(d)} is not the distance along z_(i−1) from O_(i−1) to the "
-                     f"point where x_i crosses z_(i−1) (rule 11).{hint}")
-    if not near(a, t_a):
-        hint = (" The sign: a is measured along +x_i, from z_(i−1) to O_i (a negative a means x_i points "
-                "from O_i back towards z_(i−1), note 002-n1)." if near(a, -t_a) else "")
-        items.append(f"a: your a = {_num(a)} is not the distance along x_i from z_(i−1) to O_i "
-                     f"(rule 12).{hint}")
-    if not same_angle(alpha, t_alpha):
-        if same_angle(t_alpha, 0) or same_angle(t_alpha, 180):
-            items.append(f"α: your α is {_num(alpha)}°, but z_(i−1) and z_i are parallel: α is 0° or "
-                         "180° (0° when they point the same way).")
-        elif same_angle(alpha, 0) or same_angle(alpha, 180):
-            items.append(f"α: your α is {_num(alpha)}°, which keeps z_i parallel to z_(i−1), but they "
-                         f"are at {_num(abs(t_alpha), 1)}° to each other.")
-        elif same_angle(alpha, -t_alpha):
-            items.append("α: the size is right but not the sign: turning z_(i−1) by α about x_i "
-                         "(right-hand rule: counter-clockwise seen from the tip of x_i) must bring it "
-                         "onto z_i (rule 13).")
-        else:
-            items.append(f"α: turning z_(i−1) by your α = {_num(alpha)}° about x_i does not bring it "
-                         "onto z_i (rule 13).")
-    if items:
-        return _wrong(name, items)
-    return _right(name, ["Rz(θ)·Tz(d)·Tx(a)·Rx(α) carries {S_(i−1)} exactly onto {S_i}."])
-
-
 # --- 5.3 and 6.3: a whole table, checked fairly --------------------------------------------------
 _TABLE_EXERCISES = {"arm": four_axis_arm, "seed002_4dof": robots.seed002_4dof}
 
 
 def compare_robots(student, reference, samples: int = 50, seed: int = 0) -> list:
     """What is wrong with ``student`` (a DHRobot) as a model of ``reference``, as messages
-    (empty when right). Compared: each joint axis as a directed line, and the end-effector
-    position, at q = 0 and ``samples`` random configurations within the reference's limits.
+    (empty when right). Compared: each joint axis as a directed line, the end-effector
+    position and its z axis (z_n, rule 9), at q = 0 and ``samples`` random configurations within
+    the reference's limits.
     A prismatic joint's axis is compared as a direction only: where its line lies is a free
     choice (ERRATA 002-n2). Only the first wrong joint is explained: the later ones hang from it."""
+    student, reference = _as_robot(student, "student"), _as_robot(reference, "reference")
+    samples, seed = _as_samples(samples, seed)
     n = reference.n
     if student.n != n:
         return [f"your table has {student.n} rows, but the robot has {n} joints: one row per joint."]
@@ -273,12 +99,24 @@ def compare_robots(student, reference, samples: int = 50, seed: int = 0) -> list
                 Line(rp[k - 1], ru[k - 1]).distance_to_point(sp_[k - 1])
             if su[k - 1] @ ru[k - 1] < 1 - 1e-9 or off_line > tol:
                 return [_diagnose_axis(student, reference, k, q, tol)]
-        p_s = np.asarray(student.fk(q), dtype=float)[:3, 3]
-        p_r = np.asarray(reference.fk(q), dtype=float)[:3, 3]
+        T_s, T_r = np.asarray(student.fk(q), dtype=float), np.asarray(reference.fk(q), dtype=float)
+        p_s, p_r = T_s[:3, 3], T_r[:3, 3]
         if np.linalg.norm(p_s - p_r) > tol:
             return [f"every joint axis is right, but the end effector is at {_vec(p_s)} {_at(q)}, not at "
                     f"{_vec(p_r)}: check the last row (θ{n}'s offset, d{n}, a{n})."]
+        if T_s[:3, 2] @ T_r[:3, 2] < 1 - 1e-9:
+            return [_diagnose_last_z(student, T_r[:3, 2] @ ru[n - 1] > 1 - 1e-9, n)]
     return []
+
+
+def _diagnose_last_z(student, along_previous: bool, n: int) -> str:
+    """Why z_n, the end effector's own z axis (placed by α_n), points the wrong way."""
+    alpha = _num(_row_of(student, n)[3])
+    if along_previous:
+        return (f"every joint axis and the end effector's position are right, but your α{n} = {alpha}° turns z{n} "
+                f"away from z{n - 1}: rule 9 puts z{n} along z{n - 1} (the axis of joint {n}).")
+    return (f"every joint axis and the end effector's position are right, but z{n}, the end effector's z axis, "
+            f"points the wrong way: check α{n} (yours is {alpha}°).")
 
 
 def _at(q) -> str:
@@ -363,19 +201,17 @@ def _row_problem(rows) -> str:
     return ""
 
 
-def _short(value) -> str:
-    text = repr(value)
-    return text if len(text) <= 40 else text[:37] + "…"
-
-
 def check_table(rows, exercise: str = "arm", params=None, different: bool = False) -> Feedback:
     """Check a DH table typed as on the slides, rows ``(θ, d, a, α)`` in degrees with the
     joint variables by name (``"q2 - 90"``, ``"d3"``), against an exercise robot:
     ``'arm'`` (:func:`four_axis_arm`) or ``'seed002_4dof'`` (seed 002's R-P-P-R).
     ``params``: numbers for length symbols such as ``l1`` (default: the robot's own).
     ``different=True``: the exercise asks for a table other than the robot's own."""
-    if exercise not in _TABLE_EXERCISES:
+    if not isinstance(exercise, str) or exercise not in _TABLE_EXERCISES:
         raise DHLabError(f"exercise must be one of {sorted(_TABLE_EXERCISES)}, got {exercise!r}.")
+    if params is not None and not isinstance(params, dict):
+        raise DHLabError(f"params must be a dict {{name: number}}, e.g. {{'l1': 1.0}}, got {describe(params)}.")
+    different = as_flag(different, "different")
     reference = _TABLE_EXERCISES[exercise]()
     name = "your table"
     if _blank(rows):

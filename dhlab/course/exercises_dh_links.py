@@ -9,8 +9,9 @@ import sympy as sp
 from .. import robots
 from ..dh import DHRobot
 from ..transforms import dh_matrix
+from ..validation import DHLabError, as_index, as_vector, has_angle_mark
 from .exercises import Feedback, check_matrix, check_value
-from .exercises_dh_common import _blank, _num, _unanswered
+from .exercises_dh_common import _as_robot, _blank, _num, _unanswered
 
 __all__ = ["link_exercise_robot", "check_link_matrix", "WRIST_Q_DEG", "check_wrist_centre"]
 
@@ -41,7 +42,8 @@ def link_exercise_robot() -> DHRobot:
 def check_link_matrix(M, i: int = 2, robot=None) -> Feedback:
     """Check a hand-written ^{i−1}A_i (4x4; C2 / S2 as symbols or cos(q2) / sin(q2)) against
     link ``i`` of ``robot`` (default: :func:`link_exercise_robot`)."""
-    robot = link_exercise_robot() if robot is None else robot
+    robot = link_exercise_robot() if robot is None else _as_robot(robot, kind=DHRobot)
+    i = as_index(i, "i", 1, robot.n)
     name = f"your {str(i - 1).translate(_SUP)}A{str(i).translate(_SUB)}"
     if _blank(M):
         return _unanswered(name)
@@ -69,12 +71,22 @@ def check_link_matrix(M, i: int = 2, robot=None) -> Feedback:
 WRIST_Q_DEG = (30, -45, 60, 90, -30, 45)
 
 
+def _degrees(q_deg, n: int) -> np.ndarray:
+    """``q_deg``: n joint angles in degrees, as plain numbers of at most a full turn."""
+    if has_angle_mark(q_deg):
+        raise DHLabError("q_deg is in degrees already: give plain numbers (30, not deg(30)).")
+    values = as_vector(q_deg, "q_deg", n)
+    if np.any(np.abs(values) > 360):
+        raise DHLabError(f"q_deg holds joint angles in degrees, each at most 360 in size; got {values.tolist()}.")
+    return values
+
+
 def check_wrist_centre(p, q_deg=WRIST_Q_DEG, robot=None) -> Feedback:
     """Check the wrist centre (x, y, z) of a 6-DOF arm with a spherical wrist (the axes of
     joints 4, 5, 6 meet in O4 = O5) at joint angles ``q_deg`` (degrees).
     Default robot: seed 002's 6-DOF arm."""
-    robot = robots.seed002_6dof() if robot is None else robot
-    q = np.radians(np.asarray(q_deg, dtype=float))
+    robot = robots.seed002_6dof() if robot is None else _as_robot(robot, joints=6)
+    q = np.radians(_degrees(q_deg, robot.n))
     F = np.asarray(robot.frames(q), dtype=float)
     T = np.asarray(robot.fk(q), dtype=float)
     centre, p_end, a = F[4, :3, 3], T[:3, 3], T[:3, 2]

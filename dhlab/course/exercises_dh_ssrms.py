@@ -4,23 +4,32 @@ from __future__ import annotations
 import numpy as np
 
 from .. import robots
+from ..dh import DHRobot
 from ..transforms import trans
+from ..validation import DHLabError, as_index, describe
 from .exercises import Feedback, check_value
-from .exercises_dh_common import _blank, _num, _right, _unanswered, _vec, _whole_number, _wrong
+from .exercises_dh_common import (_as_robot, _as_samples, _blank, _num, _right, _unanswered, _vec, _whole_number,
+                                  _wrong)
+from .feedback import short_repr
 
 __all__ = ["thlist_slot", "check_thlist_slots", "parallel_pairs", "check_parallel_pairs",
            "printed_key_position", "check_key_jump"]
 
 
 # --- notebook 7: the SSRMS's C++ keyboard control, and its parallel axes ------------------------------
-def thlist_slot(joint: int) -> int:
-    """Index in seed 000's ``THList`` of joint ``joint``'s Tz[θ, d] factor (the base has slots 0, 1)."""
-    return 2 * joint
+SSRMS_JOINTS = 7         # seed 000's arm: the keys '1' … '7'
+
+
+def thlist_slot(joint: int, robot=None) -> int:
+    """Index in seed 000's ``THList`` of joint ``joint``'s Tz[θ, d] factor (the base has slots 0, 1).
+    ``joint`` is 1 … n (the SSRMS, or ``robot``, has n joints)."""
+    n = SSRMS_JOINTS if robot is None else _as_robot(robot).n
+    return 2 * as_index(joint, "joint", 1, n)
 
 
 def check_thlist_slots(slots, robot=None) -> Feedback:
     """Check ``{joint: THList index}``: the slot a key must overwrite to move each SSRMS joint."""
-    robot = robots.ssrms() if robot is None else robot
+    robot = robots.ssrms() if robot is None else _as_robot(robot)
     name = "your THList slots"
     if _blank(slots):
         return _unanswered(name)
@@ -34,11 +43,10 @@ def check_thlist_slots(slots, robot=None) -> Feedback:
             continue
         given = _whole_number(slots[joint])
         if given is None:
-            shown = repr(slots[joint])
-            items.append(f"joint {joint}: {shown if len(shown) <= 30 else shown[:27] + '…'} is not an index "
+            items.append(f"joint {joint}: {short_repr(slots[joint], 30)} is not an index "
                          "(a whole number such as 5).")
             continue
-        right = thlist_slot(joint)
+        right = thlist_slot(joint, robot)
         if given == right:
             continue
         if given == right + 1:
@@ -62,7 +70,8 @@ def parallel_pairs(robot=None, samples: int = 200, seed: int = 0) -> set:
     >>> sorted(parallel_pairs())                 # the SSRMS
     [(3, 4), (3, 5), (4, 5)]
     """
-    robot = robots.ssrms() if robot is None else robot
+    robot = robots.ssrms() if robot is None else _as_robot(robot)
+    samples, seed = _as_samples(samples, seed)
     rng = np.random.default_rng(seed)
     lo, hi = robot.qlim.T
     Q = np.vstack([np.zeros(robot.n), lo + (hi - lo) * rng.random((samples, robot.n))])
@@ -100,7 +109,7 @@ def _read_pairs(pairs):
 def check_parallel_pairs(pairs, robot=None) -> Feedback:
     """Check the set of joint pairs (j, k) whose axes stay parallel at every configuration
     (default robot: the SSRMS)."""
-    robot = robots.ssrms() if robot is None else robot
+    robot = robots.ssrms() if robot is None else _as_robot(robot)
     name = "your set of parallel pairs"
     if _blank(pairs):
         return _unanswered(name)
@@ -138,8 +147,8 @@ def printed_key_position(joints, robot=None) -> np.ndarray:
     >>> printed_key_position(1).round(6).tolist()
     [24.0, 0.0, -13.0]
     """
-    robot = robots.ssrms() if robot is None else robot
-    pressed = {int(joints)} if np.ndim(joints) == 0 else {int(j) for j in joints}
+    robot = robots.ssrms() if robot is None else _as_robot(robot, kind=DHRobot)
+    pressed = _pressed(joints, robot.n)
     T = np.eye(4)
     for k in range(1, robot.n + 1):
         A = np.asarray(robot.A(k, 0.0), dtype=float)
@@ -149,11 +158,22 @@ def printed_key_position(joints, robot=None) -> np.ndarray:
     return T[:3, 3].round(12) + 0.0
 
 
+def _pressed(joints, n: int) -> tuple:
+    """The joints whose keys are pressed, in order, each once: one joint number (1 … n) or several."""
+    if isinstance(joints, np.ndarray):
+        if joints.ndim > 1:
+            raise DHLabError(f"joints must be one joint number or a list of them, got {describe(joints)}.")
+        joints = joints.tolist()            # a number (0-d) or a list of numbers
+    if isinstance(joints, (list, tuple, set, frozenset, range)):
+        return tuple(dict.fromkeys(as_index(j, "each joint of joints", 1, n) for j in joints))
+    return (as_index(joints, "joints", 1, n),)
+
+
 def check_key_jump(position, joints=(2, 5), robot=None) -> Feedback:
     """Check where the end effector ends up when the keys of ``joints`` are pressed once each
     with the printed (wrong) handler of seed 000, all joints at 0."""
-    robot = robots.ssrms() if robot is None else robot
-    joints = (joints,) if np.ndim(joints) == 0 else tuple(joints)
+    robot = robots.ssrms() if robot is None else _as_robot(robot, kind=DHRobot)
+    joints = _pressed(joints, robot.n)
     correct = np.asarray(robot.fk(robot.qz), dtype=float)[:3, 3]
     mistakes = [(correct, "that is where the correct code (THz) puts it. With the printed THx, slot "
                           "THList[2k] receives the identity: the last Tx that configurarTH built is the "

@@ -21,7 +21,7 @@ import html
 
 from ..validation import DHLabError
 
-__all__ = ["Feedback", "Exercise", "NOT_ANSWERED"]
+__all__ = ["Feedback", "Exercise", "NOT_ANSWERED", "short_repr"]
 
 NOT_ANSWERED = "not answered yet: replace the ... with your answer, then run the cell again."
 
@@ -81,9 +81,18 @@ def unanswered(name) -> Feedback:
     return Feedback("unanswered", f"{name}: {NOT_ANSWERED}")
 
 
+def short_repr(x, width: int = 60) -> str:
+    """``repr(x)`` cut to ``width`` characters for a message. Never raises: an answer whose repr
+    fails (a list nested thousands deep, a broken ``__repr__``) is named by its type."""
+    try:
+        text = repr(x)
+    except Exception:                     # RecursionError, or whatever a student's __repr__ raises
+        text = f"<a {type(x).__name__} that cannot be printed>"
+    return text if len(text) <= width else text[:width - 3] + "…"
+
+
 def _describe(answer) -> str:
-    text = repr(answer)
-    return text if len(text) <= 60 else text[:57] + "…"
+    return short_repr(answer, 60)
 
 
 class Exercise:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import unicodedata
 
 from .answers import is_unanswered
-from .feedback import Feedback, correct, unanswered, wrong
+from .feedback import Feedback, correct, short_repr, unanswered, wrong
 
 __all__ = ["check_choice", "check_terms", "words"]
 
@@ -33,8 +33,8 @@ def _norm(value, textual: bool):
         return words(value)
     try:
         hash(value)
-    except TypeError:
-        return repr(value)
+    except Exception:                     # unhashable (a list, a dict): it equals no choice
+        return short_repr(value, 10 ** 6)
     return value
 
 
@@ -62,8 +62,7 @@ def check_choice(student, correct_answer, *, name: str = "your answer", accepted
 
 
 def _short(v) -> str:
-    text = repr(v)
-    return text if len(text) <= 40 else text[:37] + "…"
+    return short_repr(v, 40)
 
 
 def check_terms(student: dict, expected: dict, *, name: str = "your glossary") -> Feedback:

@@ -52,6 +52,7 @@ class PartResult:
     key: str
     items: list
     notes: list = field(default_factory=list)    # not scored: context for the student
+    unread: str = ""                              # why the grader could not read the answers (their cell failed)
 
     @property
     def points(self) -> int:
@@ -78,12 +79,14 @@ class PartResult:
         number = self.key[-1]
         head = f"Part {number} ({self.title}): {_num(self.score)}/{self.points} points"
         if not self.answered:
-            return [head + ", not answered"]
+            return [head + (f", not read: {self.unread}" if self.unread else ", not answered")]
         out = [head]
         for item in self.items:
             mark = {True: "✓", False: "✗", None: "·"}[item.ok]
             out.append(f"  {mark} {item.label}: {item.message}" if item.message else f"  {mark} {item.label}")
         out += [f"  {note}" for note in self.notes]
+        if self.unread:
+            out.append(f"  (not all read: {self.unread})")
         return out
 
     def text(self) -> str:
@@ -135,7 +138,8 @@ def _num(x: float) -> str:
 
 
 def _vec(v, digits: int = 4) -> str:
-    return "(" + ", ".join(f"{x + 0.0:.{digits}f}" for x in np.asarray(v, float)) + ")"
+    """A point as '(x, y, z)'; rounded first, so that -0.00001 prints as 0.0000, not -0.0000."""
+    return "(" + ", ".join(f"{round(x, digits) + 0.0:.{digits}f}" for x in np.asarray(v, float).tolist()) + ")"
 
 
 # --- part 1: the sketch ----------------------------------------------------------------

@@ -78,6 +78,9 @@ def grade_submission(staged, options, iso=None, hide=()) -> dict:
     run["file"] = staged.file
     if iso is not None and iso.note():
         run["isolation_note"] = iso.note()
+    if run.get("grader_error"):                   # the grader failed, not the student: no score
+        return _grader_error_row(staged, status_text(run, report_answered=False))
+    cells = _cells_of(staged)
     answers, problem = Answers(), ""
     if run.get("answers_json"):
         try:
@@ -88,7 +91,8 @@ def grade_submission(staged, options, iso=None, hide=()) -> dict:
     unreadable = [name for name, value in answers.items() if isinstance(value, Unreadable)]
     if unreadable and not problem:
         problem = f"unreadable answers: {', '.join(unreadable)}"
-    status = status_text(run, report_answered=answers.answered(), answers_problem=problem)
+    _mark_unread(report, run, cells)
+    status = status_text(run, report_answered=answers.answered(), answers_problem=problem, cells=cells)
     note = GV.status_note(info)
     if note:
         status = note if status == "ok" else f"{note}; {status}"
@@ -99,8 +103,31 @@ def grade_submission(staged, options, iso=None, hide=()) -> dict:
         row[PART_COLUMNS[part.key]] = f"{part.score:g}"
     if info is not None:
         row.update(GV.columns(info))
-    row["_feedback_text"] = feedback_text(staged.submission, run, report, status, GV.feedback_lines(info))
+    row["_feedback_text"] = feedback_text(staged.submission, run, report, status, GV.feedback_lines(info), cells)
     return row
+
+
+def _cells_of(staged):
+    """The submission's code cells, to name them as a student counts them (None: unknown)."""
+    from .gradebook import Cells
+    from .runner import NotebookError, read_code_cells
+    try:
+        return Cells(read_code_cells(staged.copy)) if staged.copy is not None else None
+    except (NotebookError, OSError):
+        return None
+
+
+def _mark_unread(report, run, cells) -> None:
+    """A part whose answer cell failed (a SyntaxError, say) was not read, rather than not answered:
+    its feedback says so, and which cell (the score is what was read)."""
+    from .gradebook import cell_error
+    if cells is None:
+        return
+    for number, ename, evalue in run.get("errors", []):
+        for key in cells.answer_parts(number):
+            part = report.part(key)
+            if not part.unread and any(item.ok is None for item in part.items):
+                part.unread = cell_error(number, ename, evalue, cells)
 
 
 def _not_graded_row(staged, info) -> dict:
@@ -119,16 +146,26 @@ def _not_graded_row(staged, info) -> dict:
 
 def _error_row(staged, exc) -> dict:
     """The row of a submission the grader itself failed on (it keeps the batch going)."""
+    from .gradebook import status_text
+    return _grader_error_row(staged, status_text({"grader_error": f"{type(exc).__name__}: {str(exc)[:150]}"},
+                                                 report_answered=False))
+
+
+def _grader_error_row(staged, status: str) -> dict:
+    """Not graded, because the grader failed: the score and the parts are left empty (a 0 would
+    read as the student's), the feedback says so, and ``--resume`` grades it again."""
+    from . import grade_variants as GV
     from .checks import POINTS
-    from .gradebook import PART_COLUMNS, feedback_filename
-    from .grade_variants import columns
-    status = f"grader error: {type(exc).__name__}: {str(exc)[:150]}"
-    row = {"submission": staged.submission, "score": "0", "max_score": sum(POINTS.values()), "status": status,
+    from .gradebook import PART_COLUMNS, feedback_filename, not_graded_feedback
+    note = GV.status_note(staged.variant)
+    status = f"{note}; {status}" if note else status
+    row = {"submission": staged.submission, "score": "", "max_score": sum(POINTS.values()), "status": status,
            "seconds": "0", "feedback": feedback_filename(staged.submission), "file": staged.file,
-           "sha256": staged.sha256, "_feedback_text": f"Submission: {staged.submission}\nStatus: {status}\n"}
-    row.update({c: "0" for c in PART_COLUMNS.values()})
+           "sha256": staged.sha256, **{c: "" for c in PART_COLUMNS.values()}}
     if staged.variant is not None:
-        row.update(columns(staged.variant))
+        row.update(GV.columns(staged.variant))
+    row["_feedback_text"] = not_graded_feedback(staged.submission, staged.file, status,
+                                                GV.feedback_lines(staged.variant))
     return row
 
 
@@ -147,8 +184,8 @@ class Progress:
         width = 30
         filled = int(width * self.done / max(self.total, 1))
         bar = "#" * filled + "-" * (width - filled)
-        line = (f"[{bar}] {self.done}/{self.total}  {row['submission']}: {row['score']}/{row['max_score']}"
-                f"  {row['status'][:60]}")
+        score = f"{row['score']}/{row['max_score']}" if row["score"] != "" else "not graded"
+        line = f"[{bar}] {self.done}/{self.total}  {row['submission']}: {score}  {row['status'][:60]}"
         if self.tty:
             self.stream.write("\r" + line[:120].ljust(120))
             if self.done == self.total:
@@ -171,14 +208,18 @@ STATUS_KINDS = [("ok", "ok"), ("not answered", "not answered"), ("invalid notebo
 def _summary(rows, seconds, jobs) -> str:
     """A few lines for the end of the run: time, scores, how many had each kind of status."""
     n = len(rows)
-    scores = [float(r["score"]) for r in rows]
+    scored = [r for r in rows if r["score"] != ""]          # a grader error has no score
+    scores = [float(r["score"]) for r in scored]
     counts = {label: sum(1 for r in rows if (r["status"] == key if key in ("ok", "not answered") else key in r["status"]))
               for key, label in STATUS_KINDS}
     per = seconds / n if n else 0.0
-    full = sum(1 for r in rows if float(r["score"]) == float(r["max_score"]))
+    full = sum(1 for r in scored if float(r["score"]) == float(r["max_score"]))
+    mean = f"Mean score {sum(scores) / len(scores):.2f}/{rows[0]['max_score']}" if scores else "No score"
+    left = n - len(scored)
+    again = f"; not graded (grader error): {left}, run the same command with --resume" if left else ""
     return "\n".join([
         f"Graded {n} submission{'s' if n != 1 else ''} in {seconds:.1f} s with -j {jobs} ({per:.2f} s per submission).",
-        f"Mean score {sum(scores) / n:.2f}/{rows[0]['max_score']}; full marks: {full}.",
+        f"{mean}; full marks: {full}{again}.",
         "Status: " + ", ".join(f"{label} {c}" for label, c in counts.items() if c)])
 
 
@@ -310,10 +351,11 @@ def main(argv=None) -> int:
     feedback_dir = options.feedback_dir or options.output.with_name(options.output.stem + "_feedback")
 
     from . import checks, grade_variants  # noqa: F401  (imported before any student code runs)
-    from .gradebook import read_csv
+    from .gradebook import assignment_cells, grade_again, read_csv
     from .isolation import file_digests, setup
     from .staging import stage_all
     checks.check_all(checks.Answers())            # build the reference before any student code runs
+    assignment_cells()                            # and read the assignment's own cells
 
     copies, staged = stage_all(folder, paths, resolve)   # every submission copied (and its variant checked)
     for robot in {id(s.variant.robot): s.variant.robot for s in staged if s.variant and s.variant.variant}.values():
@@ -329,7 +371,8 @@ def main(argv=None) -> int:
         feedback_dir.mkdir(parents=True, exist_ok=True)
         old = read_csv(options.output, options.columns) if options.resume else []
         current = {(s.submission, s.sha256) for s in staged}
-        keep = [r for r in old if (r["submission"], r["sha256"]) in current]    # unchanged since graded
+        keep = [r for r in old if (r["submission"], r["sha256"]) in current     # unchanged since graded,
+                and not grade_again(r)]                                          # and not a grader error
         done = {(r["submission"], r["sha256"]) for r in keep}
         todo = [s for s in staged if (s.submission, s.sha256) not in done]
         batch = _Batch(options, feedback_dir, keep, file_digests)

@@ -12,20 +12,26 @@ whose name is made safe and unique by a hash of the submission's path
 
 >>> status_text({"errors": [[4, "NameError", "name 'T9' is not defined"]]}, report_answered=True)
 "error in cell 4 (NameError: name 'T9' is not defined)"
+
+A row the grader could not grade (its own failure, never the student's) has an empty
+score and says so (:data:`GRADE_AGAIN`); ``--resume`` grades it again (:func:`grade_again`).
 """
 from __future__ import annotations
 
 import csv
+import functools
 import hashlib
 import io
+import json
 import os
 import re
 import tempfile
 import unicodedata
 from pathlib import Path
 
-__all__ = ["COLUMNS", "VARIANT_COLUMNS", "PART_COLUMNS", "write_atomic", "write_csv", "read_csv", "feedback_filename", "status_text",
-           "feedback_text"]
+__all__ = ["COLUMNS", "VARIANT_COLUMNS", "PART_COLUMNS", "GRADE_AGAIN", "write_atomic", "write_csv", "read_csv",
+           "feedback_filename", "Cells", "error_text", "cell_error", "status_text", "feedback_text",
+           "not_graded_feedback", "grade_again", "assignment_cells"]
 
 PART_COLUMNS = {"part1": "part1_sketch", "part2": "part2_links", "part3": "part3_transforms"}
 COLUMNS = ["submission", "score", "max_score", "status", *PART_COLUMNS.values(), "seconds", "feedback",
@@ -33,6 +39,9 @@ COLUMNS = ["submission", "score", "max_score", "status", *PART_COLUMNS.values(),
 # with personal variants (--secret-file) the gradebook has these too, at the end, so that a
 # reader of the first columns reads it as before (see dhlab.grading.grade_variants)
 VARIANT_COLUMNS = COLUMNS + ["variant_status", "variant_source", "variant_family", "variant_id", "signed_for"]
+# the end of the status of a row the grader must grade again (its own failure, or the machine's)
+GRADE_AGAIN = "grade again with --resume"
+NOT_THE_STUDENTS = f"not the student's fault: {GRADE_AGAIN}"
 
 
 def write_atomic(path, text: str) -> None:
@@ -91,38 +100,155 @@ def feedback_filename(submission: str) -> str:
     return f"{name[:120]}-{digest}.txt"
 
 
-def _cells(numbers) -> str:
-    numbers = list(numbers)
+def grade_again(row) -> bool:
+    """Whether ``--resume`` grades this row again although its file is unchanged: the grader
+    failed on it (older gradebooks wrote such rows as 0 with 'grader error: …')."""
+    status = row.get("status") or ""
+    return GRADE_AGAIN in status or "grader error:" in status
+
+
+# --- naming the cells of a notebook ---------------------------------------------------------------
+
+ANSWER_PARTS = {"part1": ("n_links", "n_joints", "joint_types", "x_cases"), "part2": ("link_points",)}
+_ASSIGNED = re.compile(r"^[ \t]*\(?[ \t]*([A-Za-z_]\w*(?:[ \t]*,[ \t]*[A-Za-z_]\w*)*)[ \t]*\)?[ \t]*=(?!=)", re.M)
+_FILE_LINE = re.compile(r"\s*\((?:[^()]*\.py|<[^<>]*>), line (\d+)\)$")
+
+
+class Cells:
+    """A notebook's code cells, named the way a student finds them: counted from the top among
+    the code cells only (Jupyter shows no cell numbers, and markdown cells are not code), and
+    quoted by their first line. ``code_cells``: [(number among all cells, source)], as
+    :func:`dhlab.grading.runner.read_code_cells` gives them; without them, the runner's numbers.
+
+    >>> cells = Cells([(2, "import numpy as np"), (5, "# Part 2: write link_points below\\nlink_points = [")])
+    >>> cells.number(5), cells.quote(5), cells.answer_parts(5)
+    (2, '"# Part 2: write link_points below"', ['part2'])
+    """
+
+    def __init__(self, code_cells=()):
+        self.order = {number: k for k, (number, _) in enumerate(code_cells, start=1)}
+        self.source = dict(code_cells)
+
+    def number(self, cell: int) -> int:
+        return self.order.get(cell, cell)
+
+    def quote(self, cell: int, width: int = 45) -> str:
+        """The cell's first line that is not blank, quoted ('' when unknown)."""
+        lines = [line.strip() for line in self.source.get(cell, "").splitlines() if line.strip()]
+        if not lines:
+            return ""
+        first = lines[0]
+        return f'"{first[:width - 1].rstrip()}…"' if len(first) > width else f'"{first}"'
+
+    def of_assignment(self, cell: int) -> bool:
+        """Whether the cell is one of the assignment's locked cells (the student cannot edit them)."""
+        code, seam_line, _ = assignment_cells()
+        source = self.source.get(cell)
+        return source is not None and (source.strip() in code or source.lstrip().startswith(seam_line))
+
+    def answer_parts(self, cell: int) -> list:
+        """The parts whose answer cell this is (it opens with that cell's comment) or whose answers
+        it assigns: read from the text, since it may not even parse."""
+        source = self.source.get(cell, "")
+        names = {name.strip() for group in _ASSIGNED.findall(source) for name in group.split(",")}
+        parts = {part for part, wanted in ANSWER_PARTS.items() if names & set(wanted)}
+        if any(re.fullmatch(r"T\d+|chain", name) for name in names):
+            parts.add("part3")
+        stub = assignment_cells()[2].get(source.lstrip().split("\n", 1)[0].strip())
+        return sorted(parts | ({stub} if stub else set()))
+
+
+@functools.lru_cache(maxsize=None)
+def assignment_cells() -> tuple:
+    """(the code of every locked cell of the assignment, as handed out or released with a personal
+    robot; the first line of the released "Your robot" cell, which the grader rewrites; the part
+    of each answer cell's first line, e.g. '# Part 2: write link_points below: …')."""
+    from ..course.family_notebook import SEAM_CELL_ID, release_notebook
+    from . import variants
+    from .generate import SOURCE, student_notebook
+    handed_out = student_notebook(json.loads(SOURCE.read_text(encoding="utf-8")))
+    record = {"variant": variants.variant("puma560", "any").to_dict(), "student_id": "any"}
+    released, _ = release_notebook(handed_out, record, figures=False)
+    code, seam_line, stubs = set(), None, {}
+    for cell in handed_out["cells"] + released["cells"]:
+        meta = cell.get("metadata", {}).get("nbgrader", {})
+        source = "".join(cell["source"]) if isinstance(cell["source"], list) else cell["source"]
+        part = re.fullmatch(r"(part\d)_answers", meta.get("grade_id", ""))
+        if cell["cell_type"] == "code" and part and source.strip():
+            stubs[source.strip().split("\n", 1)[0].strip()] = part[1]
+        elif cell["cell_type"] == "code" and meta.get("locked") and not meta.get("solution"):
+            code.add(source.strip())
+            if cell.get("id") == SEAM_CELL_ID:
+                seam_line = source.splitlines()[0]
+    return frozenset(code), seam_line or "\0", stubs
+
+
+def error_text(ename: str, evalue: str) -> str:
+    """'NameError: …'; a SyntaxError says its line in the cell, without the kernel's file name:
+    'SyntaxError on line 14: …' (not '… (98695007.py, line 14)')."""
+    found = _FILE_LINE.search(evalue or "")
+    if found and ename in ("SyntaxError", "IndentationError", "TabError"):
+        return f"{ename} on line {found[1]}: {evalue[:found.start()]}"
+    return f"{ename}: {evalue}" if evalue else ename
+
+
+def cell_error(number: int, ename: str, evalue: str, cells=None) -> str:
+    """Why an answer cell was not read: 'your answer cell (cell 7) has a SyntaxError on line 14'."""
+    where = f"your answer cell ({_cells([number], cells)})"
+    found = _FILE_LINE.search(evalue or "")
+    if found and ename in ("SyntaxError", "IndentationError", "TabError"):
+        return f"{where} has {'an' if ename[0] == 'I' else 'a'} {ename} on line {found[1]}"
+    return f"{where} raised {error_text(ename, evalue)}"
+
+
+def _cells(numbers, cells=None) -> str:
+    numbers = [cells.number(n) if cells is not None else n for n in numbers]
     return ("cell " if len(numbers) == 1 else "cells ") + ", ".join(str(n) for n in numbers)
 
 
-def status_text(run: dict, report_answered: bool, answers_problem: str = "") -> str:
-    """One line for the gradebook's status column: 'ok', or every reason, joined by '; '."""
+def _renumber(text: str, cells) -> str:
+    """The runner's 'cell 11: …' with the cell counted as a student counts it."""
+    return re.sub(r"^cell (\d+)", lambda m: _cells([int(m[1])], cells), text)
+
+
+def _stopped(what: str, numbers, cells) -> str:
+    """'kernel died in cell 7 (run again without it)' (``what`` with '{cells}' in it), unless the
+    cell is the assignment's own: the student did nothing wrong there, and cannot delete it."""
+    text = what.format(cells=_cells(numbers, cells))
+    ours = [n for n in numbers if cells is not None and cells.of_assignment(n)]
+    if ours:
+        return f"{text} (a cell of the assignment: {cells.quote(ours[0])}; probably {NOT_THE_STUDENTS})"
+    return f"{text} (run again without it)"
+
+
+def status_text(run: dict, report_answered: bool, answers_problem: str = "", cells=None) -> str:
+    """One line for the gradebook's status column: 'ok', or every reason, joined by '; '.
+    ``cells`` (:class:`Cells`): name the cells as a student counts them."""
+    if run.get("grader_error"):                   # nothing else it says can be trusted
+        status = f"grader error: {run['grader_error']} ({NOT_THE_STUDENTS})"
+        return status + (f" ({run['isolation_note']})" if run.get("isolation_note") else "")
     reasons = []
     if run.get("notebook_error"):
         reasons.append(f"invalid notebook: {run['notebook_error']}")
-    if run.get("grader_error"):
-        reasons.append(f"grader error: {run['grader_error']}")
     memory = [e for e in run.get("errors", []) if e[1] == "MemoryError"]
     others = [e for e in run.get("errors", []) if e[1] != "MemoryError"]
     if memory:
-        reasons.append(f"memory limit reached in {_cells(e[0] for e in memory)} (MemoryError)")
+        reasons.append(f"memory limit reached in {_cells((e[0] for e in memory), cells)} (MemoryError)")
     if others:
-        first = others[0]
-        detail = f" ({first[1]}: {first[2]})" if first[2] else f" ({first[1]})"
-        reasons.append(f"error in {_cells(e[0] for e in others)}" + (detail if len(others) == 1 else
-                                                                     f", first{detail}"))
+        detail = f" ({error_text(others[0][1], others[0][2])})"
+        reasons.append(f"error in {_cells((e[0] for e in others), cells)}" + (detail if len(others) == 1 else
+                                                                              f", first{detail}"))
     if run.get("timeouts"):
-        reasons.append(f"timeout: {_cells(run['timeouts'])} stopped at the time limit")
+        reasons.append(f"timeout: {_cells(run['timeouts'], cells)} stopped at the time limit")
     if run.get("output_capped"):
-        sizes = ", ".join(f"{b / 1e6:.1f} MB in cell {c}" for c, b in run["output_capped"])
+        sizes = ", ".join(f"{b / 1e6:.1f} MB in {_cells([c], cells)}" for c, b in run["output_capped"])
         reasons.append(f"output limit: printed {sizes} (stopped, run again without it)")
     if run.get("kernel_died"):
-        reasons.append(f"kernel died in {_cells(run['kernel_died'])} (run again without it)")
+        reasons.append(_stopped("kernel died in {cells}", run["kernel_died"], cells))
     if run.get("stuck"):
-        reasons.append(f"{_cells(run['stuck'])} could not be interrupted (run again without it)")
+        reasons.append(_stopped("{cells} could not be interrupted", run["stuck"], cells))
     if run.get("runner_killed"):
-        reasons.append(f"the grader's runner was killed in {_cells(run['runner_killed'])} (run again without it)")
+        reasons.append(_stopped("the grader's runner was killed in {cells}", run["runner_killed"], cells))
     if run.get("out_of_time"):
         reasons.append("time limit for the whole notebook reached")
     if run.get("answers_error"):
@@ -130,7 +256,7 @@ def status_text(run: dict, report_answered: bool, answers_problem: str = "") -> 
     if answers_problem:
         reasons.append(answers_problem)
     if run.get("tampering"):
-        reasons.append(f"modifies dhlab, ignored ({run['tampering'][0]})")
+        reasons.append(f"modifies dhlab, ignored ({_renumber(run['tampering'][0], cells)})")
     if not report_answered and not run.get("notebook_error"):
         reasons.append("not answered")
     status = "; ".join(reasons) or "ok"
@@ -139,7 +265,7 @@ def status_text(run: dict, report_answered: bool, answers_problem: str = "") -> 
     return status
 
 
-def feedback_text(submission: str, run: dict, report, status: str, robot_lines=()) -> str:
+def feedback_text(submission: str, run: dict, report, status: str, robot_lines=(), cells=None) -> str:
     """The feedback file of one submission: the score, what happened, every check
     (``robot_lines``: which robot it was graded against, with variants)."""
     lines = [f"Submission: {submission}", f"File: {run.get('file', submission + '.ipynb')}", f"Status: {status}", ""]
@@ -147,15 +273,24 @@ def feedback_text(submission: str, run: dict, report, status: str, robot_lines=(
     lines.append(report.text())
     details = []
     for number, ename, evalue in run.get("errors", []):
-        details.append(f"cell {number} raised {ename}" + (f": {evalue}" if evalue else ""))
+        quote = f" ({cells.quote(number)})" if cells is not None and cells.quote(number) else ""
+        details.append(f"{_cells([number], cells)}{quote} raised {error_text(ename, evalue)}")
     if run.get("skipped"):
-        details.append(f"the notebook was run again without {_cells(run['skipped'])}")
+        details.append(f"the notebook was run again without {_cells(run['skipped'], cells)}")
     if run.get("tampering"):
-        details += [f"{t} (this has no effect: the grader checks your answers in its own process)"
+        details += [f"{_renumber(t, cells)} (this has no effect: the grader checks your answers in its own process)"
                     for t in run["tampering"]]
     if details:
-        lines += ["How your notebook ran:", *[f"  - {d}" for d in details], ""]
+        counted = " (cells counted from the top, code cells only)" if cells is not None else ""
+        lines += [f"How your notebook ran{counted}:", *[f"  - {d}" for d in details], ""]
     lines.append("Your answers were read from the variables n_links, n_joints, joint_types, x_cases, "
                  f"link_points, T1…T{report.n} and chain after your notebook ran, and checked by the grader "
                  f"against {'your ' + report.robot if report.robot != 'PUMA 560' else 'the PUMA 560'}.")
     return "\n".join(lines) + "\n"
+
+
+def not_graded_feedback(submission: str, file: str, status: str, robot_lines=()) -> str:
+    """The feedback file of a submission the grader failed on: no score, and why not."""
+    return "\n".join([f"Submission: {submission}", f"File: {file}", f"Status: {status}", "", *robot_lines,
+                      "Not graded: the grader failed on this notebook (a grader error: the grading machine's "
+                      "problem, not your work), so it has no score yet. Your teacher will grade it again.", ""])

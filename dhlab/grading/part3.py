@@ -164,18 +164,35 @@ def _flip_fixes(i: int, row: Row, how: str) -> list:
     return fixes
 
 
-def _flip_message(i: int, row: Row, how: str) -> str:
-    """T_i is right up to a flip of its frame, which the rows after it undo: name the parameter."""
+def _flip_message(i: int, row: Row, how: str, n: int) -> str:
+    """T_i is right up to a flip of its frame, which the rows after it (up to T_n) undo: name the parameter."""
     axis = {"z": f"z{i}", "x": f"x{i}", "xz": f"x{i} and z{i}"}[how]
     param = f"α{i}" if how == "z" else f"θ{i}'s offset"
-    return (f"{param}: your T{i} builds a valid frame {i}, but your T{i + 1}, T{i + 2}, … are written for "
-            f"frame {i} with {axis} pointing the other way; with {', '.join(_flip_fixes(i, row, how))} they fit "
+    later = _later_rows(i, n)
+    verb, pronoun = ("is", "it fits") if i + 1 == n else ("are", "they fit")
+    return (f"{param}: your T{i} builds a valid frame {i}, but your {later} {verb} written for "
+            f"frame {i} with {axis} pointing the other way; with {', '.join(_flip_fixes(i, row, how))} {pronoun} "
             f"(one slip: only T{i} is charged)")
+
+
+def _later_rows(i: int, n: int) -> str:
+    """The rows after T_i, up to the robot's last, T_n: 'T6', 'T5 and T6', 'T3…T6'."""
+    if i + 1 >= n:
+        return f"T{n}"
+    if i + 2 == n:
+        return f"T{i + 1} and T{n}"
+    return f"T{i + 1}…T{n}"
 
 
 def _angle(x: float) -> str:
     x = (x + 180) % 360 - 180
-    return f"{(180.0 if abs(x + 180) < 1e-9 else x) + 0.0:g}"
+    return _g(180.0 if abs(x + 180) < 1e-9 else x)
+
+
+def _g(x: float) -> str:
+    """x as the messages print it (:g), never '-0' (-0.0 + 0.0 is 0.0): a sign change of zero,
+    as in θ3 = -(q3 + 0), means nothing."""
+    return f"{float(x) + 0.0:g}"
 
 
 def analyse(answers: Answers, ref=None) -> Analysis:
@@ -229,7 +246,7 @@ def _expand(ref, i: int, rows, A, s: _State) -> list:
             passed_free = passed_free or not extra
             items, charged, edits = list(s.items), s.charged, s.edits
             if extra:
-                items[i - 2] = Item(items[i - 2].label, False, _flip_message(i - 1, rows[i - 2], how))
+                items[i - 2] = Item(items[i - 2].label, False, _flip_message(i - 1, rows[i - 2], how, ref.n))
                 charged = charged + (i - 1,)
                 edits += len(_flip_fixes(i - 1, rows[i - 2], how))
             frames = s.frames[:-1] + [V]                # the frame i-1 the student meant
@@ -307,7 +324,8 @@ def _line_word(angle: float) -> str:
 
 
 def _vec(v, digits: int = 4) -> str:
-    return "(" + ", ".join(f"{x + 0.0:.{digits}f}" for x in np.asarray(v, float)) + ")"
+    """A point as '(x, y, z)'; rounded first, so that -0.00001 prints as 0.0000, not -0.0000."""
+    return "(" + ", ".join(f"{round(x, digits) + 0.0:.{digits}f}" for x in np.asarray(v, float).tolist()) + ")"
 
 
 def diagnose(ref, i: int, V, F, row: Row) -> str:
@@ -322,33 +340,33 @@ def diagnose(ref, i: int, V, F, row: Row) -> str:
         target = ref.axes[n - 1]
         if abs(float(z @ target.direction)) < math.cos(math.radians(puma.TOL_DEG)):
             return (f"z{n} should lie along z{n - 1} (the axis of joint {n}: the last frame's z is aligned "
-                    f"with the previous one, seed 000 paso 0); your α{n} = {row.alpha:g}° turns it{alpha_hint}")
+                    f"with the previous one, seed 000 paso 0); your α{n} = {_g(row.alpha)}° turns it{alpha_hint}")
         miss = float(np.linalg.norm(o - ref.end_point))
         return (f"end effector: frame {n}'s origin should be at {ref.end_text}, {_vec(ref.end_point)} m; "
-                f"yours is {miss:.4f} m away, at {_vec(o)}: check d{n} = {row.d.text()} and a{n} = {row.a:g}")
+                f"yours is {miss:.4f} m away, at {_vec(o)}: check d{n} = {row.d.text()} and a{n} = {_g(row.a)}")
     L_prev, L_next = ref.axes[i - 1], ref.axes[i]
     rel = puma.relation(L_prev, L_next)
     ang_st = math.degrees(math.acos(min(1.0, abs(float(z_prev @ z)))))
     joint = f"joint {i + 1}"
     if abs(ang_st - rel.acute) > puma.TOL_DEG:
         verb = "leaves it parallel" if ang_st < puma.TOL_DEG else "turns it"
-        return (f"{joint}: z{i} should be {_line_word(rel.acute)} z{i - 1}; your α{i} = {row.alpha:g}° "
+        return (f"{joint}: z{i} should be {_line_word(rel.acute)} z{i - 1}; your α{i} = {_g(row.alpha)}° "
                 f"{verb}{alpha_hint} (the axis of {joint} is {_line_word(rel.acute)} the axis of joint {i})")
     if abs(float(z @ L_next.direction)) < math.cos(math.radians(puma.TOL_DEG)):
         return (f"{joint}: z{i} is {_line_word(rel.acute)} z{i - 1} as it should be, but points the wrong way "
                 f"at the home pose: x{i} must lie along the common normal of z{i - 1} and z{i} "
                 f"(at home, along ±{_vec(rel.normal, 3)}); check the constant in θ{i} "
-                f"(yours: {row.theta.const:g}°) and the sign of α{i}")
+                f"(yours: {_g(row.theta.const)}°) and the sign of α{i}")
     if "P" in ref.kinds[i - 1:i + 1]:             # a sliding joint's line is the student's: no distances
         return _sliding_problem(ref, i, F, row)
     if abs(abs(row.a) - rel.distance) > puma.TOL_POS:
         should = (f"should meet z{i - 1} (a{i} = 0)" if rel.kind == "intersect" else
                   f"should be {rel.distance:.4g} m from z{i - 1} (the length of their common normal, |a{i}|)")
-        return f"{joint}: z{i} {should}; your a{i} = {row.a:g}"
+        return f"{joint}: z{i} {should}; your a{i} = {_g(row.a)}"
     if rel.kind in ("parallel", "skew") and float(row.a * F[:3, 0] @ rel.normal) < 0:
         return (f"{joint}: z{i} is {rel.distance:.4g} m from z{i - 1} as it should be, but on the wrong side "
                 f"at the home pose: x{i} points from z{i - 1} towards z{i}; check the constant in θ{i} "
-                f"(yours: {row.theta.const:g}°) or the sign of a{i}")
+                f"(yours: {_g(row.theta.const)}°) or the sign of a{i}")
     # right direction and distance: x_i crosses z_{i-1} at the wrong height (d_i)
     crossing = o - row.a * F[:3, 0]
     target = rel.foot - (rel.distance * rel.normal if rel.kind == "skew" else 0.0)
@@ -368,8 +386,8 @@ def _sliding_problem(ref, i: int, F, row: Row) -> str:
     off = ref.axes[i].distance_to_point(F[:3, 3])
     if ref.kinds[i] == "R" and off > puma.TOL_POS:
         return (f"{joint}: z{i} must lie on the axis of {joint}, the line it turns about; yours is {off:.4g} m "
-                f"from it at the home pose: check a{i} (yours: {row.a:g}), d{i} (yours: {row.d.text()}) and "
-                f"the constant in θ{i} (yours: {row.theta.const:g}°)")
+                f"from it at the home pose: check a{i} (yours: {_g(row.a)}), d{i} (yours: {row.d.text()}) and "
+                f"the constant in θ{i} (yours: {_g(row.theta.const)}°)")
     return (f"frame {i} is not a valid DH frame: x{i} must be square to z{i - 1} and z{i} (the directions of the "
             f"axes of joints {i} and {i + 1}) and z{i} along the axis of {joint}; check θ{i} and α{i}")
 

@@ -67,7 +67,8 @@ def _sequence_floats(x, name: str) -> np.ndarray:
         obj = np.array(x, dtype=object)
     except (ValueError, TypeError):
         obj = None
-    if obj is None or any(isinstance(e, (list, tuple, np.ndarray)) for e in obj.ravel()):
+    if obj is None or any(isinstance(e, (list, tuple)) or isinstance(e, np.ndarray) and e.ndim
+                          for e in obj.ravel()):      # a 0-d array is the number it holds
         raise DHLabError(f"{name} = {describe(x)} is ragged: its rows have different lengths. "
                          "Every row must have the same number of values.")
     return _objects_floats(obj, name)

@@ -118,10 +118,10 @@ def _check_not_radians(column: np.ndarray, j: int, name: str) -> None:
 # ------------------------------------------------------------------------------------------
 def as_qlim(qlim, revolute: bool, name: str = "qlim") -> tuple:
     """One joint's limits (low, high): finite, low < high; radians (at most a full turn
-    either way) for a revolute joint, lengths (no deg() mark) for a prismatic one."""
+    either way) for a revolute joint, lengths (no deg() mark, at most ``LARGEST_LENGTH``)
+    for a prismatic one."""
     unit = "radians, e.g. (deg(-90), deg(90))" if revolute else "lengths, e.g. (0.0, 0.5)"
-    if isinstance(qlim, (str, bytes, dict, set)) or not hasattr(qlim, "__len__") or np.ndim(qlim) != 1 \
-            or len(qlim) != 2:
+    if not _is_pair(qlim):
         raise DHLabError(f"{name} must be two numbers (low, high) in {unit}; got {describe(qlim)}.")
     if not revolute and has_angle_mark(qlim):
         raise DHLabError(f"{name} of a prismatic joint is a range of lengths, but it was made with deg(): "
@@ -129,7 +129,19 @@ def as_qlim(qlim, revolute: bool, name: str = "qlim") -> tuple:
     low, high = (as_number(v, f"{name}[{k}]") for k, v in enumerate(qlim))
     if not low < high:
         raise DHLabError(f"{name} must be (low, high) with low < high, got {describe(qlim)}.")
-    if revolute:
-        for v in (low, high):
+    for v in (low, high):
+        if revolute:
             as_angle(v, f"{name} (a revolute joint's limit)")
+        else:                       # a longer range overflows the robot's reach and its sampled poses
+            check_length_size(abs(v), f"{name} (a prismatic joint's limit)")
     return (low, high)
+
+
+def _is_pair(qlim) -> bool:
+    """True for two entries side by side (a list, a tuple, a 1-d array), not text, a mapping or a set."""
+    if isinstance(qlim, (str, bytes, dict, set)) or not hasattr(qlim, "__len__"):
+        return False
+    try:
+        return np.ndim(qlim) == 1 and len(qlim) == 2
+    except (ValueError, TypeError):            # ragged, e.g. (0, [1]): numpy cannot make an array of it
+        return False

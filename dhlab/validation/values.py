@@ -71,7 +71,8 @@ def _not_a_number(x, name: str) -> DHLabError:
     elif x is np.ma.masked:
         why = "it is a masked (missing) value: fill it in first"
     else:
-        why = f"it is a {type(x).__name__}, not a number"
+        kind = type(x).__name__
+        why = f"it is {'an' if kind[:1] in 'aeiou' else 'a'} {kind}, not a number"
     return DHLabError(f"{name} = {describe(x)} is not a valid number: {why}.")
 
 

@@ -37,7 +37,7 @@ import re
 import sympy as sp
 
 from ..symbolic import _check_finite_entries, compact, legend
-from ..validation import DHLabError
+from ..validation import DHLabError, as_number, as_text
 
 __all__ = ["show_matrix", "ShownMatrix", "latex_width_px", "PX_PER_EM", "COLUMN_PX"]
 
@@ -243,10 +243,10 @@ class ShownMatrix:
     def __init__(self, M, symbols=None, *, name=None, max_width_px=900):
         self.scalar = isinstance(M, (sp.Expr, int, float)) and not isinstance(M, bool)
         self.full = _as_matrix(M)
-        if not isinstance(max_width_px, (int, float)) or not max_width_px > 100:
+        self.max_width_px = as_number(max_width_px, "max_width_px")
+        if not self.max_width_px > 100:
             raise DHLabError(f"show_matrix: max_width_px must be a number of pixels above 100, got {max_width_px!r}.")
-        self.max_width_px = float(max_width_px)
-        self.name = name
+        self.name = None if name is None else as_text(name, "name")
         q = _symbols_of(symbols, self.full)
         self.compact = compact(self.full, q) if q else self.full
         self.legend = legend(self.full, q) if q else ""

@@ -32,6 +32,7 @@ panel says which branch would.
 from __future__ import annotations
 
 import html
+import inspect
 
 import ipywidgets as widgets
 import numpy as np
@@ -39,7 +40,7 @@ from matplotlib.patches import Rectangle
 from matplotlib.ticker import MultipleLocator
 from matplotlib.transforms import offset_copy
 
-from ..validation import DHLabError, as_choice
+from ..validation import DHLabError, as_choice, as_length, check_joint_values, describe
 from .livefigure import LiveFigure
 from .panel import Panel, SliderEchoes, checked_start, joint_sliders, q_to_slider, unit_of
 from .view import checked_robot, default_q, robot_view
@@ -72,6 +73,21 @@ def wrap_into_limits(robot, q) -> tuple:
     return q, ok
 
 
+def _check_ik_function(ik) -> None:
+    """``ik`` must be a function that can be called as ik(x, y)."""
+    if not callable(ik):
+        raise DHLabError(f"ik must be a function ik(x, y) -> list of joint vectors, got {describe(ik)}.")
+    try:
+        signature = inspect.signature(ik)
+    except (TypeError, ValueError):      # some built-in callables have none: they are tried as they are
+        return
+    try:
+        signature.bind(0.0, 0.0)
+    except TypeError:
+        raise DHLabError(f"ik must be a function ik(x, y) of the target's two coordinates (e.g. functools."
+                         f"partial(dhlab.ik.pr_mechanism_ik, robot)); this one takes {signature}.") from None
+
+
 class SpacesPanel(Panel):
     """The widget of :func:`spaces`.
 
@@ -86,8 +102,8 @@ class SpacesPanel(Panel):
         if callable(q) and ik is None:
             raise DHLabError("spaces(robot, q=None, *, ik=None): the second argument is the start "
                              "pose q; pass the inverse kinematics by name, spaces(robot, ik=...).")
-        if ik is not None and not callable(ik):
-            raise DHLabError(f"ik must be a function ik(x, y) -> list of joint vectors, got {ik!r:.60}.")
+        if ik is not None:
+            _check_ik_function(ik)
         if robot.n != 2:
             raise DHLabError(f"the joint-space view needs a 2-DOF mechanism (one axis per joint); "
                              f"{robot.name!r} has {robot.n} joints.")
@@ -227,7 +243,7 @@ class SpacesPanel(Panel):
         x, y = np.asarray(self.robot.fk(q), dtype=float)[:2, 3]
         if self.ik is not None:
             self._set_target_sliders((x, y))
-            self._show_solutions(self.ik(x, y), (x, y))
+            self._show_solutions((x, y))
             if self.solutions:                 # the robot's branch: the solution it is at
                 near = int(np.argmin([np.linalg.norm(s - q) for s in self.solutions]))
                 self._set_branch_quietly(SOLUTION_NAMES[near])
@@ -240,9 +256,9 @@ class SpacesPanel(Panel):
         see :meth:`set_branch`)."""
         if self.ik is None:
             raise DHLabError("this panel has no inverse kinematics: pass ik=... to spaces().")
-        x, y = (float(v) for v in (x, y))
+        x, y = as_length(x, "target x"), as_length(y, "target y")
         self._set_target_sliders((x, y))
-        self._show_solutions(self.ik(x, y), (x, y))
+        self._show_solutions((x, y))
         q, note = self.q, ""
         k = SOLUTION_NAMES.index(self.branch) if self.branch in SOLUTION_NAMES else 0
         if k < len(self.solutions) and self.solutions_ok[k]:
@@ -278,14 +294,38 @@ class SpacesPanel(Panel):
     def _set_target_sliders(self, target):
         self._set_quietly(self.target_sliders, target)
 
-    def _show_solutions(self, solutions, target):
-        """Remember the IK solutions; return those within the joint limits."""
-        self.ik_message = getattr(solutions, "message", "")
-        wrapped = [wrap_into_limits(self.robot, s) for s in list(solutions)[:MAX_SOLUTIONS]]
+    def _show_solutions(self, target):
+        """Solve the IK for ``target`` and remember the solutions; return those within the joint limits."""
+        solutions, self.ik_message = self._solve(*target)
+        wrapped = [wrap_into_limits(self.robot, s) for s in solutions[:MAX_SOLUTIONS]]
         self.solutions = [s for s, _ in wrapped]
         self.solutions_ok = [ok for _, ok in wrapped]
         self.target = target
         return [s for s, ok in wrapped if ok]
+
+    def _solve(self, x, y) -> tuple:
+        """The student's ``ik(x, y)``, checked: (the joint vectors as floats, its message)."""
+        try:
+            solutions = self.ik(x, y)
+        except DHLabError:
+            raise
+        except Exception as exc:        # a bug in the student's ik: say where it happened
+            raise DHLabError(f"ik({x:g}, {y:g}) failed: {type(exc).__name__}: {exc}") from exc
+        expected = "ik must return a list of joint vectors, [[q1, q2], ...] ([] when there is none)"
+        if not isinstance(solutions, (list, tuple, np.ndarray)) or getattr(solutions, "ndim", 1) == 0:
+            raise DHLabError(f"{expected}; ik({x:g}, {y:g}) returned {describe(solutions)}.")
+        message = getattr(solutions, "message", "")
+        message = message if isinstance(message, str) else ""
+        if len(solutions) == 0:
+            return [], message
+        try:
+            checked = check_joint_values(solutions, self.robot.links, name="the solutions")
+        except DHLabError as error:
+            raise DHLabError(f"{expected}; ik({x:g}, {y:g}) returned {describe(solutions)}: {error}") from None
+        if checked.ndim != 2:
+            raise DHLabError(f"{expected}; ik({x:g}, {y:g}) returned one joint vector, "
+                             f"{describe(solutions)}: put it in a list, [{describe(solutions)}].")
+        return list(checked), message
 
     def _draw(self, q, target):
         self.view.update(q, draw=False)

@@ -24,10 +24,11 @@ import ipywidgets as widgets
 import numpy as np
 
 from ..transforms import Rx, Rz, trans
-from ..validation import DHLabError, as_index, as_matrix4, as_number
+from ..validation import (DHLabError, as_angle, as_index, as_length, as_matrix4, as_number, as_text, describe,
+                          has_angle_mark)
 from .camera import set_camera
 from .livefigure import LiveFigure
-from .panel import Panel
+from .panel import Panel, checked_start
 from .teach import matrix_html
 from .layout import keep_texts_inside, space_ticks
 from .view import AXIS_COLORS, FrameLabels3D, checked_robot, line_in_box, one_pose, triad_segments
@@ -118,8 +119,10 @@ class StepThroughPanel(Panel):
 
     def __init__(self, theta, d, a, alpha, *, i=1, base=None, unit="", step=0.0,
                  figsize=(6, 6), backend="auto"):
-        self.params = tuple(as_number(v, name) for v, name in zip((theta, d, a, alpha), "θdaα"))
-        self.i, self.unit = as_index(i, "i", 1, 10_000), str(unit)
+        theta, alpha = as_angle(theta, "theta"), as_angle(alpha, "alpha")
+        d, a = as_length(d, "d"), as_length(a, "a")
+        self.params = (theta, d, a, alpha)
+        self.i, self.unit = as_index(i, "i", 1, 10_000), as_text(unit, "unit")
         self.base = np.eye(4) if base is None else as_matrix4(base, "base")
         step = _checked_step(step)
         # triad length: a third of the link's longest offset (1 when it has none)
@@ -243,9 +246,20 @@ def stepthrough(theta_deg: float = 0.0, d: float = 0.0, a: float = 0.0, alpha_de
     >>> panel.frame[:3, 3].round(6).tolist()
     [0.0, 0.0, 1.0]
     """
-    theta, alpha = (math.radians(as_number(v, name)) for v, name in ((theta_deg, "theta_deg"),
-                                                                      (alpha_deg, "alpha_deg")))
+    theta, alpha = _radians(theta_deg, "theta_deg"), _radians(alpha_deg, "alpha_deg")
     return StepThroughPanel(theta, d, a, alpha, **_options(i, unit, step, figsize, backend))
+
+
+def _radians(degrees, name: str) -> float:
+    """An angle of a DH row typed in degrees (-360 … 360), in radians."""
+    if has_angle_mark(degrees):      # deg() made it radians already: converting again would be wrong
+        raise DHLabError(f"{name} = {describe(degrees)} is already in radians (made by deg()), but {name} "
+                         f"is in degrees: write the plain number of degrees (e.g. {name}=90).")
+    value = as_number(degrees, name)
+    if abs(value) > 360:
+        raise DHLabError(f"{name} = {value:g}° is more than a full turn: {name} is in degrees, "
+                         "from -360 to 360 (720° is the same as 0°). Check the number.")
+    return math.radians(value)
 
 
 def stepthrough_link(robot, i: int, q=None, *, step: float = 0.0, figsize=(6, 6),
@@ -257,7 +271,7 @@ def stepthrough_link(robot, i: int, q=None, *, step: float = 0.0, figsize=(6, 6)
     without moving the slider."""
     checked_robot(robot)
     i = as_index(i, "link number i", 1, robot.n)
-    q = one_pose(robot, q)
+    q = checked_start(robot, q)                          # one pose, inside the joint limits (as teach)
     frames = np.asarray(robot.frames(q), dtype=float)
     A = np.linalg.solve(frames[i - 1], frames[i])       # ^{i-1}A_i = inv(F_{i-1}) · F_i
     theta, d, a, alpha = dh_params(A)

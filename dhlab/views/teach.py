@@ -18,7 +18,7 @@ import numpy as np
 import ipywidgets as widgets
 
 from ..transforms import rpy
-from ..validation import DHLabError
+from ..validation import DHLabError, as_flag
 from .panel import Panel, checked_start, joint_sliders, q_to_slider, slider_to_q, view_controls
 from .view import checked_robot, default_q, robot_view
 
@@ -65,6 +65,7 @@ class TeachPanel(Panel):
         if on_change is not None and not callable(on_change):
             raise DHLabError(f"on_change must be a function of q (or None), got {on_change!r:.60}.")
         self.on_change = on_change
+        controls = as_flag(controls, "controls")
         q = default_q(robot) if q is None else checked_start(robot, q)
         rows, self.sliders = joint_sliders(robot, q)
         self.view = robot_view(robot, q, planar=planar, figsize=figsize, backend=backend,
@@ -130,7 +131,8 @@ def teach(robot, q=None, *, on_change=None, planar=None, figsize=None,
     :func:`dhlab.views.figures.new_figure`). ``backend``: 'auto', 'ipympl' or
     'image'. ``controls``: show the camera presets, zoom and label toggles.
     Other keyword options go to the view (:func:`~dhlab.views.view.robot_view`):
-    ``labels``, ``joint_axes``, ``camera``, ``zoom``, ``title``, ``framing``.
+    ``labels``, ``joint_axes``, ``camera``, ``zoom``, ``title``, ``framing``,
+    ``color``, ``alpha``.
     """
     return TeachPanel(robot, q, on_change=on_change, planar=planar, figsize=figsize,
                       backend=backend, controls=controls, **view_options)

@@ -28,8 +28,11 @@ axes (:mod:`~dhlab.views.livefigure`) is redrawn only when the frame changes.
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.colors import is_color_like
+from mpl_toolkits.mplot3d import Axes3D
 
-from ..validation import DHLabError, as_choice, as_flag, as_number, check_joint_values
+from ..validation import DHLabError, as_choice, as_flag, as_number, as_text, check_joint_values, describe
 from . import framing
 from .camera import set_camera
 from .labels import FrameLabels, FrameLabels3D
@@ -176,14 +179,17 @@ class RobotView:
         self.framing = as_choice(framing, ("follow", "fixed"), "framing")
         self.camera = as_choice(camera, ("iso", "front", "side", "top"), "camera")
         self.zoom = self._checked_zoom(zoom)
-        self.title = robot.name if title is None else (title or "")
+        self.title = robot.name if title is None else ("" if title is False else as_text(title, "title"))
+        color, alpha = _checked_color(color), _checked_alpha(alpha)
+        self._check_drawing_place(ax, live)
         self.box = workspace_box(robot)
         self.triad_length = TRIAD_FRACTION * typical_size(robot)
         self.has_tool = not np.allclose(np.asarray(robot.tool, dtype=float), np.eye(4))
         self.show_triads = as_flag(triads, "triads")
         self._labels_on = as_flag(labels, "labels")
         self._joint_axes_on = as_flag(joint_axes, "joint_axes")
-        self.q = one_pose(robot, q)
+        from .panel import checked_start     # here: panel.py imports this module
+        self.q = checked_start(robot, q)     # within the joint limits, as teach() and its sliders
         self.frames = self._frames_at(self.q)
         self.limits = None                    # (lo, hi) of the current frame, when framed
         self._reframed = False
@@ -194,7 +200,7 @@ class RobotView:
             self._fit(live.figure)
             self.setup_axes(ax)
         self.ax, self.live = ax, live
-        self.artists = self._make_artists(color, as_number(alpha, "alpha"))
+        self.artists = self._make_artists(color, alpha)
         if live is not None:
             live.add_moving(*self.artists)
         self.update(self.q, draw=False)
@@ -203,6 +209,8 @@ class RobotView:
     def update(self, q, draw: bool = True) -> None:
         """Move the robot to ``q`` (radians / length units). ``draw=False`` only
         moves the artists (a panel updating several views draws once)."""
+        if draw is not True and draw is not False:      # the panels pass a bool: no check on their path
+            draw = as_flag(draw, "draw")
         self.q = one_pose(self.robot, q)
         self.frames = self._frames_at(self.q)
         if self.limits is not None and self.framing == "follow" and framing.needs_reframe(
@@ -293,6 +301,16 @@ class RobotView:
             self._place(self.frames)
         if draw:
             self.draw()
+
+    def _check_drawing_place(self, ax, live) -> None:
+        """``live`` a LiveFigure, ``ax`` an Axes of this view's kind (3D or 2D), or None."""
+        if live is not None and not isinstance(live, LiveFigure):
+            raise DHLabError(f"live must be a dhlab LiveFigure (or None), got {describe(live)}.")
+        three_d = self.projection == "3d"
+        if ax is not None and (not isinstance(ax, Axes) or isinstance(ax, Axes3D) != three_d):
+            kind = ("3D Axes, e.g. figure.add_subplot(projection='3d')" if three_d else
+                    "2D Axes, e.g. figure.add_subplot() (or pass planar=False for a 3D view)")
+            raise DHLabError(f"ax must be a matplotlib {kind}; got {describe(ax)}.")
 
     @staticmethod
     def _checked_zoom(zoom):
@@ -479,15 +497,32 @@ class RobotView2D(RobotView):
             self.labels.set_points(origins, tol=1e-3 * self.triad_length, avoid=self._strokes(frames)[:, :2])
 
 
+def _checked_color(color):
+    if not is_color_like(color):
+        raise DHLabError(f"color must be a matplotlib colour, e.g. 'tab:blue', '0.25' (grey) or (0.2, 0.4, 0.6); "
+                         f"got {describe(color)}.")
+    return color
+
+
+def _checked_alpha(alpha) -> float:
+    alpha = as_number(alpha, "alpha")
+    if not 0 <= alpha <= 1:
+        raise DHLabError(f"alpha must be from 0 (invisible) to 1 (opaque), e.g. 0.45 for a faint robot; "
+                         f"got {alpha:g}.")
+    return alpha
+
+
 def robot_view(robot, q=None, *, planar: bool | None = None, **options) -> RobotView:
-    """A view of ``robot`` at ``q`` (default: zero, inside the joint limits).
+    """A view of ``robot`` at ``q`` (default: zero, inside the joint limits; a ``q``
+    outside them is refused, as by :func:`~dhlab.views.teach.teach`).
 
     ``planar=None`` picks the 2D view for robots that stay in the xy plane
     (``robot.is_planar``) and the 3D view otherwise. Other options (keyword
     only): ``ax`` and ``live`` (draw into an existing axes / live figure; call
     ``view.setup_axes(ax)`` to let the view set limits, labels and title),
     ``triads``, ``labels``, ``joint_axes``, ``framing``, ``camera``, ``zoom``,
-    ``title``, ``color``, ``alpha``, ``figsize``, ``backend``.
+    ``title`` (text, or False for none), ``color`` (a matplotlib colour),
+    ``alpha`` (0 … 1), ``figsize``, ``backend``.
     """
     checked_robot(robot)
     if planar is None:

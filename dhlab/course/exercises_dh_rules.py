@@ -1,0 +1,238 @@
+"""Exercises of notebook 5 on single rules: the case of each x_i (rule 7, exercise 5.1) and a DH row
+read from two frames (rules 10-13, exercise 5.2).
+
+A case is read as one case: an answer that names none, several, or says what does not hold
+("they do not intersect") gets feedback, never a guess.
+"""
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+
+from ..transforms import Rx, Rz, dh_matrix, trans
+from ..validation import DHLabError, as_matrix4, describe, rigid_problem
+from .exercises import Feedback
+from .exercises_dh_common import (ANGLE_TOL, Relation, _as_robot, _axes_of, _blank, _num, _read_numbers, _right,
+                                  _short, _unanswered, _whole_number, _wrong, axis_relation)
+from .exercises_dh_frames import four_axis_arm
+from .word_checks import words
+
+__all__ = ["check_x_cases", "ROW_EXERCISE", "row_exercise_frames", "check_dh_row"]
+
+
+# --- 5.1: the case of each x_i ------------------------------------------------------------------
+_CASE_WORDS = (("intersec", "intersect"), ("corta", "intersect"), ("parallel", "parallel"),
+               ("parale", "parallel"), ("skew", "skew"), ("cruza", "skew"), ("coinciden", "coincident"),
+               ("same line", "coincident"), ("misma recta", "coincident"))
+_CASE_NUMBERS = {1: "intersect", 2: "parallel", 3: "skew"}
+_NEGATION = re.compile(r"\b(not|no|never|neither|nor|cannot|can t|don t|doesn t|isn t|aren t|dont|doesnt|isnt|"
+                       r"arent|nunca|ni|tampoco)\b")
+_SAID = {"intersect": "z{p} and z{i} intersect", "parallel": "z{p} and z{i} are parallel",
+         "skew": "z{p} and z{i} are skew", "coincident": "z{p} and z{i} are the same line"}
+_ASK = "say which one case holds: 'intersect', 'parallel' or 'skew' (or 'case 1', 'case 2', 'case 3')."
+
+
+def _cases_named(text: str) -> set:
+    """Every case a text names: by a word (English or Spanish) or as 'case 2' / 'caso 2' / '2'."""
+    named = {kind for stem, kind in _CASE_WORDS if stem in text}
+    named |= {_CASE_NUMBERS[int(n)] for n in re.findall(r"\b(?:case|caso)\s*([123])\b", text)}
+    if text in ("1", "2", "3"):
+        named.add(_CASE_NUMBERS[int(text)])
+    if named == {"parallel", "coincident"}:          # "parallel: the same line" is one case
+        named = {"coincident"}
+    return named
+
+
+def _read_case(value):
+    """The case an answer names, read as one case: ('skew', '') from 'skew', 'se cruzan', 'case 3'
+    or 3; (None, why) when it names none, several, or says what the case is not.
+
+    >>> _read_case("se cruzan")
+    ('skew', '')
+    >>> _read_case("they do not intersect")[0] is None
+    True
+    """
+    number = _whole_number(value)
+    if number is not None:
+        if number not in _CASE_NUMBERS:
+            return None, f"there is no case {number}: {_ASK}"
+        return _CASE_NUMBERS[number], ""
+    if not isinstance(value, str):
+        return None, f"cannot read {_short(value)}: {_ASK}"
+    text, shown = words(value), repr(value.strip()[:40])
+    named = _cases_named(text)
+    if len(named) > 1:
+        count = {2: "two", 3: "three"}.get(len(named), str(len(named)))
+        return None, f"your answer {shown} names {count} cases ({' and '.join(sorted(named))}): {_ASK}"
+    if _NEGATION.search(text):
+        return None, f"your answer {shown} says what does not hold: {_ASK}"
+    if not named:
+        return None, f"cannot read {_short(value)}: {_ASK}"
+    return named.pop(), ""
+
+
+def _refutation(said: str, rel: Relation) -> str:
+    """Why the relation the student said is not the one of z_(i-1) and z_i, without naming the
+    right one (that is the exercise): the test their claim fails."""
+    if said == "coincident" and rel.kind == "intersect":
+        return (f"one line has a single direction, and their directions are "
+                f"{_num(min(rel.angle, 180 - rel.angle), 1)}° apart.")
+    if said in ("intersect", "coincident"):
+        return f"they do not meet: the shortest distance between the two lines is {_num(rel.distance)}, not 0."
+    if said == "parallel":
+        return (f"they do not point the same way: their directions are "
+                f"{_num(min(rel.angle, 180 - rel.angle), 1)}° apart.")
+    return "they lie in one plane, and skew lines never do (look at their directions, then at whether they meet)."
+
+
+def _case_key(key):
+    """A key of the answer dict as the number i of x_i: 1, '1', 'x1' -> 1; None otherwise."""
+    number = _whole_number(key)
+    if number is not None:
+        return number
+    if isinstance(key, str):
+        text = key.strip().lower().lstrip("x").strip("_ ")
+        return int(text) if text.isdigit() else None
+    return None
+
+
+def check_x_cases(answer, robot=None) -> Feedback:
+    """Check which case places x_i, i = 1 … n−1: ``{i: 'intersect' | 'parallel' | 'skew'}``
+    (or 'case 1' …, or a list in the order x1, x2, …). Default robot: :func:`four_axis_arm`.
+
+    A wrong case is refuted (the test the claimed relation fails), not corrected: the
+    feedback never states the right case.
+    """
+    robot = four_axis_arm() if robot is None else _as_robot(robot, joints=2)
+    count = robot.n - 1
+    name = f"the cases of x1 … x{count}"
+    if _blank(answer):
+        return _unanswered(name)
+    if isinstance(answer, (list, tuple)):
+        answer = dict(enumerate(answer, start=1))
+    if not isinstance(answer, dict):
+        return _wrong(name, [f"give a dict {{i: case}} for i = 1 … {count}, e.g. {{1: 'parallel', …}}, "
+                             f"not a {type(answer).__name__}."])
+    given = {}
+    for key, value in answer.items():
+        i = _case_key(key)
+        if i is None or not 1 <= i <= count:
+            return _wrong(name, [f"{_short(key)} is not one of the x_i asked: the keys are 1 … {count}."])
+        given[i] = value
+    missing = [i for i in range(1, count + 1) if i not in given]
+    if missing:
+        return _wrong(name, [f"say the case of every x_i, i = 1 … {count}: x{missing[0]} is missing."])
+    points, dirs = _axes_of(robot, robot.qz)
+    items = []
+    for i in range(1, count + 1):
+        said, unreadable = _read_case(given[i])
+        if said is None:
+            items.append(f"x{i}: {unreadable}")
+            continue
+        rel = axis_relation(points[i - 1], dirs[i - 1], points[i], dirs[i])
+        if rel.kind == "coincident" and said in ("coincident", "parallel", "intersect"):
+            continue
+        if said != rel.kind:
+            items.append(f"x{i}: you said {_SAID[said].format(p=i - 1, i=i)}, but "
+                         f"{_refutation(said, rel)}")
+    return _wrong(name, items) if items else _right(name)
+
+
+# --- 5.2: one DH row from two frames ---------------------------------------------------------------
+ROW_EXERCISE = (120.0, 0.3, 0.4, -90.0)       # θ, d, a, α of the hidden link (degrees, metres)
+
+
+def row_exercise_frames():
+    """The two frames of exercise 5.2: ({S_(i-1)}, {S_i}) in the world, 4x4 each."""
+    theta, d, a, alpha = ROW_EXERCISE
+    before = Rz(math.radians(30)) @ trans(0.2, -0.1, 0.3) @ Rx(math.radians(90))
+    return before, before @ dh_matrix(math.radians(theta), d, a, math.radians(alpha))
+
+
+def _angle_diff(a: float, b: float) -> float:
+    """a − b in degrees, wrapped into (−180, 180]."""
+    d = (a - b) % 360.0
+    return d - 360.0 if d > 180.0 else d
+
+
+def _true_row(before, after):
+    A = np.linalg.solve(before, after)
+    theta = math.atan2(A[1, 0], A[0, 0])
+    alpha = math.atan2(A[2, 1], A[2, 2])
+    a = A[0, 3] * math.cos(theta) + A[1, 3] * math.sin(theta)
+    if not np.allclose(dh_matrix(theta, A[2, 3], a, alpha), A, atol=1e-9):
+        raise DHLabError("these two frames are not related by a DH link: x_i must cross z_(i-1) at a "
+                         "right angle.")
+    return math.degrees(theta), float(A[2, 3]), float(a), math.degrees(alpha)
+
+
+def _frame_pair(frames):
+    """``frames`` = ({S_(i-1)}, {S_i}): two rigid 4x4 poses."""
+    if not isinstance(frames, (list, tuple)) or len(frames) != 2:
+        got = f"{len(frames)} items" if isinstance(frames, (list, tuple)) else describe(frames)
+        raise DHLabError(f"frames must be a pair (S_prev, S_next) of 4x4 poses, got {got}.")
+    pair = []
+    for k, T in enumerate(frames):
+        T = as_matrix4(T, f"frames[{k}]")
+        problem = rigid_problem(T, 1e-6)
+        if problem:
+            raise DHLabError(f"frames[{k}] is not a pose: {problem}.")
+        pair.append(T)
+    return pair
+
+
+def check_dh_row(answer, frames=None) -> Feedback:
+    """Check a DH row ``(θ, d, a, α)`` (angles in **degrees**) that carries ``frames[0]`` =
+    {S_(i-1)} onto ``frames[1]`` = {S_i} (default: :func:`row_exercise_frames`)."""
+    name = "your row (θ, d, a, α)"
+    before, after = row_exercise_frames() if frames is None else _frame_pair(frames)
+    if _blank(answer):
+        return _unanswered(name)
+    values, problem = _read_numbers(answer, 4, "(θ, d, a, α), angles in degrees")
+    if problem:
+        return _wrong(name, [problem])
+    theta, d, a, alpha = values
+    t_theta, t_d, t_a, t_alpha = _true_row(before, after)
+    scale = max(1.0, abs(t_d), abs(t_a))
+    near = lambda x, y: abs(x - y) <= 1e-3 * scale
+    same_angle = lambda x, y: abs(_angle_diff(x, y)) <= ANGLE_TOL
+    if not (near(d, t_d) and near(a, t_a)) and near(d, t_a) and near(a, t_d):
+        return _wrong(name, ["d and a are swapped: the columns are θ, d, a, α; d is measured along "
+                             "z_(i−1), a along x_i."])
+    items = []
+    if not same_angle(theta, t_theta):
+        hint = ""
+        if same_angle(theta, -t_theta):
+            hint = " Check the sense: positive is counter-clockwise seen from the tip of z_(i−1)."
+        elif same_angle(theta + 180, t_theta):
+            hint = " It is 180° off: your x_i points the other way."
+        items.append(f"θ: turning x_(i−1) by your θ = {_num(theta)}° about z_(i−1) does not make it "
+                     f"parallel to x_i (rule 10).{hint}")
+    if not near(d, t_d):
+        hint = " The sign: d is positive towards +z_(i−1)." if near(d, -t_d) else ""
+        items.append(f"d: your d = {_num(d)} is not the distance along z_(i−1) from O_(i−1) to the "
+                     f"point where x_i crosses z_(i−1) (rule 11).{hint}")
+    if not near(a, t_a):
+        hint = (" The sign: a is measured along +x_i, from z_(i−1) to O_i (a negative a means x_i points "
+                "from O_i back towards z_(i−1), note 002-n1)." if near(a, -t_a) else "")
+        items.append(f"a: your a = {_num(a)} is not the distance along x_i from z_(i−1) to O_i "
+                     f"(rule 12).{hint}")
+    if not same_angle(alpha, t_alpha):
+        if same_angle(t_alpha, 0) or same_angle(t_alpha, 180):
+            items.append(f"α: your α is {_num(alpha)}°, but z_(i−1) and z_i are parallel: α is 0° or "
+                         "180° (0° when they point the same way).")
+        elif same_angle(alpha, 0) or same_angle(alpha, 180):
+            items.append(f"α: your α is {_num(alpha)}°, which keeps z_i parallel to z_(i−1), but they "
+                         f"are at {_num(abs(t_alpha), 1)}° to each other.")
+        elif same_angle(alpha, -t_alpha):
+            items.append("α: the size is right but not the sign: turning z_(i−1) by α about x_i "
+                         "(right-hand rule: counter-clockwise seen from the tip of x_i) must bring it "
+                         "onto z_i (rule 13).")
+        else:
+            items.append(f"α: turning z_(i−1) by your α = {_num(alpha)}° about x_i does not bring it "
+                         "onto z_i (rule 13).")
+    if items:
+        return _wrong(name, items)
+    return _right(name, ["Rz(θ)·Tz(d)·Tx(a)·Rx(α) carries {S_(i−1)} exactly onto {S_i}."])
