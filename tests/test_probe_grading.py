@@ -206,3 +206,29 @@ def test_an_error_in_a_cell_of_its_own_leaves_the_parts_as_they_are():
                                  cells=cells) == "error in cell 2 (NameError: name 'lenghts' is not defined)"
     assert gradebook.status_text({"tampering": ["cell 13: redefines check_part1"]}, True, cells=cells) == \
         "modifies dhlab, ignored (cell 2: redefines check_part1)"
+
+
+def test_part1_accepts_either_case_where_a_sliding_axis_may_be_drawn_to_meet_the_other_or_not():
+    """A prismatic joint fixes only its axis's direction: drawn through the other axis the pair
+    intersects, drawn beside it the pair is skew. Both are valid sketches (between two turning
+    joints the case is fixed, and the other one is still wrong)."""
+    from dhlab.course.family import family_names
+    from dhlab.course.family_model import build
+    from dhlab.grading import checks, puma
+    from dhlab.grading.answers import Answers
+
+    checked = 0
+    for key in family_names():
+        robot = build(key)
+        cases = [puma.relation(robot.axes[i - 1], robot.axes[i]).kind for i in range(1, robot.n)]
+        for i, case in enumerate(cases, start=1):
+            if case not in ("intersect", "skew"):
+                continue
+            other = "skew" if case == "intersect" else "intersect"
+            answers = Answers(n_links=robot.n + 1, n_joints=robot.n, joint_types=list(robot.kinds),
+                              x_cases=cases[:i - 1] + [other] + cases[i:])
+            item = checks.check_part1(answers, ref=robot).items[2 + i]
+            sliding = "P" in robot.kinds[i - 1:i + 1]
+            assert item.ok is sliding, (key, i, item)
+            checked += sliding
+    assert checked >= 1          # the family has such a pair (the Stanford arm's, at least)

@@ -399,7 +399,10 @@ def _other_mistakes(robot, ns):
     yield "part1", "joint_types", dict(ns, joint_types=robot.kinds[:k] + "PR"[robot.kinds[k] == "P"] + robot.kinds[k + 1:])
     for i in range(1, robot.n):
         cases = list(ns["x_cases"])
-        cases[i - 1] = wrong_word[cases[i - 1]]
+        if "P" in robot.kinds[i - 1:i + 1] and cases[i - 1] in ("intersect", "skew"):
+            cases[i - 1] = "parallel"    # next to a sliding joint both of those are right; their directions are not
+        else:
+            cases[i - 1] = wrong_word[cases[i - 1]]
         yield "part1", f"x{i}", dict(ns, x_cases=cases)
     for k in range(robot.n + 1):
         points = dict(ns["link_points"])

@@ -179,8 +179,11 @@ def check_part1(answers: Answers, ref=None) -> PartResult:
         label = f"x{i}"
         expected = puma.relation(ref.axes[i - 1], ref.axes[i]).kind
         accepted = {expected, "parallel"} if expected == "coincident" else {expected}   # case 2 covers both
-        if expected == "parallel" and "P" in ref.kinds[i - 1:i + 1]:
-            accepted.add("coincident")          # a sliding joint's axis may be drawn on the other line
+        if "P" in ref.kinds[i - 1:i + 1]:      # a sliding joint's axis may be drawn on any line parallel to it:
+            if expected == "parallel":          # on the other axis,
+                accepted.add("coincident")
+            elif expected in ("intersect", "skew"):
+                accepted |= {"intersect", "skew"}   # through the other axis or past it
         if cases is NOT_ANSWERED or (isinstance(cases, list) and (i > len(cases) or cases[i - 1] is None)):
             items.append(Item(label, None, "not answered"))
         elif isinstance(cases, Unreadable):
