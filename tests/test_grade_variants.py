@@ -15,6 +15,7 @@ import copy
 import csv
 import json
 import math
+import shutil
 import sys
 from pathlib import Path
 
@@ -130,7 +131,9 @@ def _rows(path) -> dict:
 @pytest.fixture(scope="module")
 def package(one_batch_at_a_time):
     from test_grading_runner import _package_copy
-    return _package_copy()
+    folder = _package_copy()
+    yield folder
+    shutil.rmtree(folder, ignore_errors=True)
 
 
 def test_the_class_is_graded_against_each_students_robot(released, handed_in, package):

@@ -90,11 +90,13 @@ def batch(tmp_path_factory, one_batch_at_a_time):
     before = isolation.fingerprint(package / "dhlab")
     # a generous time per cell: on a busy machine the first cell (imports) can take many seconds
     argv = ["puma", str(folder), "-o", str(out), "-j", "2", "--timeout", "40", "--total-timeout", "150"]
+    holds = set(Path(tempfile.gettempdir()).glob("dhlab-hold-*"))
     started = time.monotonic()
     proc = _grade(argv, package, timeout=1800)
     yield {"rows": _read(out), "proc": proc, "feedback": out.with_name("gradebook_feedback"), "csv": out,
            "folder": folder, "originals": originals, "package": package, "before": before,
-           "seconds": time.monotonic() - started}
+           "seconds": time.monotonic() - started,
+           "holds_left": set(Path(tempfile.gettempdir()).glob("dhlab-hold-*")) - holds}
     shutil.rmtree(package, ignore_errors=True)
 
 
@@ -257,6 +259,12 @@ def test_no_process_is_left_running(batch):
     while _grading_processes(batch["package"]) and time.monotonic() < deadline:
         time.sleep(0.5)
     assert _grading_processes(batch["package"]) == []
+
+
+def test_no_folder_is_left_in_tmp(batch):
+    """The sandbox's temporary mount points (as root: the Python under /root made reachable)
+    are removed once the kernel's paths are mounted: a class of 30 leaves no 30 folders in /tmp."""
+    assert batch["holds_left"] == set()
 
 
 @pytest.mark.skipif(not AS_ROOT, reason="the kernels run as their own users only when the grader is root")

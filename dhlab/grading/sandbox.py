@@ -55,6 +55,7 @@ MAX_PROCESSES = 128       # per kernel user (RLIMIT_NPROC): no fork bomb
 CLONE_NEWNS = 0x00020000
 MS_RDONLY, MS_NOSUID, MS_NODEV, MS_NOEXEC = 1, 2, 4, 8
 MS_BIND, MS_REC, MS_PRIVATE = 4096, 16384, 1 << 18
+MNT_DETACH = 2
 
 
 def apply_limits(memory_mb: float | None, cpu_seconds: float | None, file_mb: float | None) -> None:
@@ -118,6 +119,19 @@ def _mount(libc, source, target, fstype, flags, data=None):
         raise OSError(err, f"mount {fstype or 'bind'} on {target}: {os.strerror(err)}")
 
 
+def _remove_hold(libc, hold: str, held) -> None:
+    """The paths are mounted in their places now: detach the temporary spots and remove their
+    folder, so no kernel leaves a folder behind in /tmp (the mounts in place stay)."""
+    try:
+        for _, spot in held:
+            if libc.umount2(spot.encode(), MNT_DETACH) != 0:
+                return                            # still mounted: leave the (empty) folder
+            os.rmdir(spot)
+        os.rmdir(hold)
+    except OSError:
+        pass                                      # an empty folder left in /tmp is harmless
+
+
 def _needed_paths() -> list:
     """What the kernel must reach: the Python installation, the environment, dhlab's folder."""
     import importlib.util
@@ -169,6 +183,7 @@ def enter_sandbox(uid: int, gid: int, hide=()) -> list:
                 os.makedirs(path, exist_ok=True)
                 _mount(libc, spot, path, None, MS_BIND | MS_REC)
             os.umask(old)
+            _remove_hold(libc, hold, held)
         needed = _needed_paths()
         for folder in hide:                                # the other submissions
             folder = os.path.realpath(folder)
