@@ -52,16 +52,20 @@ import dhlab  # noqa: E402
 from dhlab.views.teach import teach  # noqa: E402
 from dhlab.views import framing  # noqa: E402
 from dhlab.views.labels import group_points, merged_name  # noqa: E402
-from dhlab.views.view import (AXIS_COLORS, EE_COLOR, JOINT_AXIS_COLOR, LINK_COLOR, line_in_box,  # noqa: E402
-                              triad_segments, typical_size)
+from dhlab.views.view import (AXIS_COLORS, EE_COLOR, JOINT_AXIS_COLOR, LINK_COLOR, TRIAD_FRACTION,  # noqa: E402
+                              line_in_box, triad_segments, typical_size)
+from dhlab.views.mechanism import Mechanism  # noqa: E402
+from dhlab.views.triads import letter_points  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 FIGSIZE, DPI = (5.6, 5.6), 100       # the teach panel's default size
 
 
 class NaiveFigure:
     """The same picture as dhlab's 3D view, drawn the usual way: clear the axes,
-    plot everything again (links, three triad lines, end effector, labels,
-    limits, axis labels, title), then render the whole figure."""
+    plot everything again (the mechanism: links along their d and a segments,
+    joints as solids, the gripper; three triad lines and their x/y/z letters, end
+    effector, labels, limits, axis labels, title), then render the whole figure."""
 
     def __init__(self, robot, canvas="agg"):
         self.robot = robot
@@ -72,21 +76,28 @@ class NaiveFigure:
         else:
             FigureCanvasAgg(self.figure)
         self.ax = self.figure.add_axes([0.1, 0.06, 0.8, 0.84], projection="3d", proj_type="ortho")
-        self.length = 0.08 * typical_size(robot)
+        self.length = TRIAD_FRACTION * typical_size(robot)
+        self.mechanism = Mechanism(robot, typical_size(robot))
 
     def plot(self, q):
         ax, F = self.ax, np.asarray(self.robot.frames(q), dtype=float)
         origins = F[:, :3, 3]
+        shape = self.mechanism.shape(F, np.asarray(q, dtype=float))
         ax.cla()
-        lo, hi = framing.frame_box(origins, pad=0.6 * self.length)
+        lo, hi = framing.frame_box(shape.points, pad=0.6 * self.length)
         ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]), xlabel="$x_0$",
                ylabel="$y_0$", zlabel="$z_0$")
         framing.fit_zoom(ax)
         axes = [np.vstack([*line_in_box(f[:3, 3], f[:3, 2], lo, hi), np.full(3, np.nan)]) for f in F[:-1]]
         ax.plot(*np.vstack(axes).T, "--", color=JOINT_AXIS_COLOR, lw=1)
-        ax.plot(*origins.T, "-o", color=LINK_COLOR, lw=3, ms=4)
-        for color, seg in zip(AXIS_COLORS, triad_segments(F, self.length)):
-            ax.plot(*seg.T, "-", color=color, lw=2)
+        ax.plot(*shape.path.T, "-", color=LINK_COLOR, lw=4)
+        ax.add_collection3d(Poly3DCollection(shape.faces, facecolors=shape.colors, linewidths=0.5))
+        ax.plot(*shape.gripper.T, "-", color=EE_COLOR, lw=3.5)
+        for color, seg, tips, letter in zip(AXIS_COLORS, triad_segments(F, self.length),
+                                            letter_points(F, self.length), "xyz"):
+            ax.plot(*seg.T, "-", color=color, lw=2.5)
+            for tip in tips:
+                ax.text(*tip, letter, color=color, fontsize=10, ha="center", va="center")
         ax.plot(*origins[-1:].T, "*", color=EE_COLOR, mec="k", ms=15)
         names = [rf"$\{{S_{{{i}}}\}}$" for i in range(len(F))]
         for group in group_points(origins, 1e-9):

@@ -40,8 +40,8 @@ def draw(panel):
     return panel.figure.canvas.get_renderer()
 
 
-def origins_in_pixels(view):
-    ax, points = view.ax, view.frames[:, :3, 3]
+def origins_in_pixels(view, points=None):
+    ax, points = view.ax, view.frames[:, :3, 3] if points is None else points
     if ax.name == "3d":
         x, y, _ = proj3d.proj_transform(*points.T, ax.M)
         return ax.transData.transform(np.column_stack([x, y]))
@@ -49,7 +49,9 @@ def origins_in_pixels(view):
 
 
 def extent(view):
-    pixels = origins_in_pixels(view)
+    """How much of its axes the drawn robot spans: its links' corners (the frame origins and,
+    in the mechanism drawing, the knees where d ends and a starts)."""
+    pixels = origins_in_pixels(view, view._framed_points())
     span = pixels.max(axis=0) - pixels.min(axis=0)
     return max(span[0] / view.ax.bbox.width, span[1] / view.ax.bbox.height)
 

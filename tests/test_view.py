@@ -40,7 +40,7 @@ def pixels(view):
 @pytest.mark.parametrize("make", ROBOTS_3D, ids=lambda f: f.__name__)
 def test_3d_view_draws_the_robot_frames(make):
     robot = make()
-    view = robot_view(robot)
+    view = robot_view(robot, style="stick")
     assert isinstance(view, RobotView3D)
     rng = np.random.default_rng(1)
     for _ in range(3):
@@ -60,7 +60,7 @@ def test_3d_view_draws_the_robot_frames(make):
 @pytest.mark.parametrize("make", ROBOTS_2D, ids=lambda f: f.__name__)
 def test_planar_view_draws_the_robot_frames(make):
     robot = make()
-    view = robot_view(robot)
+    view = robot_view(robot, style="stick")
     assert isinstance(view, RobotView2D)
     rng = np.random.default_rng(2)
     for _ in range(3):

@@ -146,11 +146,23 @@ class CourseFigure(Figure):
             enforce_min_text(self)
             tight = self.get_tightbbox(renderer)
             if tight is not None:                 # never crop, only widen: the minimum size holds
-                bbox = Bbox.union([self.bbox_inches, tight.padded(0.05)])
+                bbox = Bbox.union([self.bbox_inches, tight.padded(0.05), *self._texts_3d(renderer)])
         buffer = io.BytesIO()
         self.savefig(buffer, format="png", dpi=self.dpi, bbox_inches=bbox,
                      facecolor=self.get_facecolor())
         return buffer.getvalue()
+
+    def _texts_3d(self, renderer) -> list:
+        """Where the labels of 3D axes are really drawn (inches): matplotlib's tight box
+        misses some of them (an axis label of a turned 3D axes), so they are added."""
+        from .layout import drawn_texts
+        axes3d = [ax for ax in self.axes if getattr(ax, "name", "") == "3d"]
+        if not axes3d:
+            return []
+        self.canvas.draw()                        # the labels sit where the last draw put them
+        to_inches = self.dpi_scale_trans.inverted()
+        return [t.get_window_extent(renderer).transformed(to_inches).padded(0.05)
+                for ax in axes3d for t in drawn_texts(ax)]
 
     def _repr_png_(self):
         return self.png() if self.axes else None

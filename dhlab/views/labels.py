@@ -178,6 +178,7 @@ class FrameLabels(PathCollection):
         self.texts, self._boxes = [], np.zeros((0, 4))
         super().__init__([], offsets=np.zeros((0, 2)), offset_transform=IdentityTransform(),
                          facecolors=color, edgecolors="none", alpha=alpha)
+        self.set_zorder(4)                        # above the robot in a still figure too
         self.leaders = LineCollection([], colors="0.45", linewidths=0.8, alpha=alpha)
         ax.add_collection(self, autolim=False)
         self.leaders.set_figure(ax.figure)

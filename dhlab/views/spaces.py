@@ -186,7 +186,7 @@ class SpacesPanel(Panel):
         ax = live.figure.add_subplot(self._grid[0, 1], projection=None if planar else "3d")
         # the ghosts (one per possible IK solution) first, so the robot is drawn on top
         self.ghosts = [robot_view(self.robot, q, ax=ax, live=live, planar=planar, triads=False,
-                                  labels=False, color=c, alpha=0.45) for c in GHOST_COLORS]
+                                  labels=False, color=c, alpha=0.45, style="stick") for c in GHOST_COLORS]
         self.view = robot_view(self.robot, q, ax=ax, live=live, planar=planar, framing="fixed")
         self.view.setup_axes(ax)
         ax.set_title("Cartesian space (espacio cartesiano)")

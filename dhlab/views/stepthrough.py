@@ -31,7 +31,8 @@ from .livefigure import LiveFigure
 from .panel import Panel, checked_start
 from .teach import matrix_html
 from .layout import keep_texts_inside, space_ticks
-from .view import AXIS_COLORS, FrameLabels3D, checked_robot, line_in_box, one_pose, triad_segments
+from .triads import LETTER_MARKERS, axis_colors, letter_points, triad_segments
+from .view import FrameLabels3D, checked_robot, line_in_box
 
 __all__ = ["dh_partial", "dh_params", "motion_text", "stepthrough", "stepthrough_link",
            "StepThroughPanel", "MOTIONS"]
@@ -164,22 +165,24 @@ class StepThroughPanel(Panel):
                      rf"from $\{{S_{{{self.i - 1}}}\}}$ to $\{{S_{{{self.i}}}\}}$", pad=2)
         # still: frame i-1 (solid), frame i (faint, where the motions end), the z_(i-1) axis
         self._triad(ax, start, lw=2, alpha=1.0)
-        self._triad(ax, end, lw=1.5, alpha=0.3, ls="--")
+        self._triad(ax, end, lw=2.2, alpha=0.6, ls="--")      # the target: dashed, still visible projected
         FrameLabels3D(ax, [rf"$\{{S_{{{self.i - 1}}}\}}$", rf"$\{{S_{{{self.i}}}\}}$"]).set_points(
             [start[:3, 3], end[:3, 3]])
         lo, hi = center - half, center + half
         space_ticks(ax)                       # no colliding tick labels
         keep_texts_inside(ax)                 # nothing clipped at the figure's edge
-        ax.plot(*line_in_box(start[:3, 3], start[:3, 2], lo, hi).T, ":", color=AXIS_COLORS[2], lw=1)
-        # moving: the frame being carried, and the path its origin has travelled
+        ax.plot(*line_in_box(start[:3, 3], start[:3, 2], lo, hi).T, ":", color=axis_colors()[2], lw=1)
+        # moving: the frame being carried (with its x, y, z letters), and the path its origin has travelled
         self.moving_axes = self._triad(ax, start, lw=3.5, alpha=1.0)
+        self.moving_letters = [ax.plot([], [], [], ls="", marker=m, ms=12, color=c)[0]
+                               for c, m in zip(axis_colors(), LETTER_MARKERS)]
         self.path, = ax.plot([], [], [], "--", color="0.4", lw=1)
-        live.add_moving(*self.moving_axes, self.path)
+        live.add_moving(*self.moving_axes, *self.moving_letters, self.path)
         self.ax = ax
 
     def _triad(self, ax, T, **style):
         return [ax.plot(*seg.T, color=c, **style)[0]
-                for c, seg in zip(AXIS_COLORS, triad_segments(T[None], self.length))]
+                for c, seg in zip(axis_colors(), triad_segments(T[None], self.length))]
 
     # --- update ------------------------------------------------------------------------
     def _refresh(self):
@@ -187,6 +190,8 @@ class StepThroughPanel(Panel):
         self.frame = self.base @ dh_partial(*self.params, step)
         for line, seg in zip(self.moving_axes, triad_segments(self.frame[None], self.length)):
             line.set_data_3d(*seg.T)
+        for mark, tip in zip(self.moving_letters, letter_points(self.frame[None], self.length)):
+            mark.set_data_3d(*tip.T)
         # the origin moves only during Tz and Tx: corners at steps 0, 2, 3, then now
         corners = [self.base @ dh_partial(*self.params, min(step, s)) for s in (0, 2, 3, step)]
         self.path.set_data_3d(*np.array([c[:3, 3] for c in corners]).T)
