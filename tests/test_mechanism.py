@@ -140,3 +140,28 @@ def test_colorblind_palette():
 def test_triads_are_sized_from_the_robot():
     small, big = robots.puma560(), robots.ssrms()
     assert robot_view(big).triad_length > 10 * robot_view(small).triad_length
+
+
+@pytest.mark.parametrize("name", ["ssrms", "puma560", "seed002_4dof", "seed003_6dof", "pr_mechanism",
+                                  "robot_no_tan_elemental_2"])
+def test_frame_labels_keep_off_the_joints(name):
+    """No frame label is drawn over a joint's solid or the gripper (their outline points)."""
+    from dhlab.views import framing
+    from dhlab.views.teach import teach
+
+    robot = robots.catalogue()[name]()
+    panel = teach(robot, backend="image")
+    lo, hi = robot.qlim.T
+    rng = np.random.default_rng(5)
+    for k in range(3):
+        if k:
+            panel.set_q(lo + (hi - lo) * rng.random(robot.n))
+        view = panel.view
+        view.live.png()
+        boxes = view.labels.boxes()
+        pts = (framing.projected(view.ax, view.shape.outline) if view.ax.name == "3d"
+               else view.ax.transData.transform(view.shape.outline[:, :2]))
+        covered = ((pts[:, None, 0] > boxes[None, :, 0]) & (pts[:, None, 0] < boxes[None, :, 2])
+                   & (pts[:, None, 1] > boxes[None, :, 1]) & (pts[:, None, 1] < boxes[None, :, 3]))
+        assert not covered.any(), f"pose {k}: a label covers {int(covered.any(axis=1).sum())} points of the joints"
+    panel.close()

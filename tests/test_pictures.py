@@ -27,6 +27,7 @@ from matplotlib.text import Text  # noqa: E402
 from mpl_toolkits.mplot3d import proj3d  # noqa: E402
 
 from dhlab import robots  # noqa: E402
+from dhlab.views import framing  # noqa: E402
 from dhlab.views.figures import new_figure, projector  # noqa: E402
 from dhlab.views.teach import teach  # noqa: E402
 
@@ -123,6 +124,13 @@ def problems(panel, start: bool):
         found.append("a frame label is clipped")
     if view.labels.fontsize * figure.dpi / 72 < 12:
         found.append("frame labels under 12 px")
+    # the 3D box (its panes and edges) inside the figure
+    if view.ax.name == "3d":
+        corners = framing.projected(view.ax, np.array(list(itertools.product(
+            view.ax.get_xlim(), view.ax.get_ylim(), view.ax.get_zlim()))))
+        if (corners < fig_box.p0 - 1).any() or (corners > fig_box.p1 + 1).any():
+            found.append(f"the 3D box is cut at the figure's edge: corners {corners.min(axis=0).round()}…"
+                         f"{corners.max(axis=0).round()} in {np.round(fig_box.extents)}")
     # the robot fills its view
     fraction = extent(view)
     if fraction < (0.6 if start else 0.4):

@@ -41,7 +41,7 @@ LIGHT = LIGHT / np.linalg.norm(LIGHT)
 
 # sizes, as fractions of the robot's typical size (the triad is 0.14 of it)
 CYLINDER_RADIUS, CYLINDER_HALF = 0.032, 0.055
-SLEEVE_HALF_WIDTH, CARRIAGE_HALF_WIDTH, CARRIAGE_HALF = 0.03, 0.042, 0.025
+SLEEVE_HALF_WIDTH, CARRIAGE_HALF_WIDTH, CARRIAGE_HALF = 0.038, 0.05, 0.025
 GRIPPER_STEM, GRIPPER_WIDTH, FINGER_LENGTH = 0.04, 0.1, 0.07
 SLEEVE_ALPHA = 0.5               # the link's line inside the sleeve shows through
 

@@ -209,6 +209,9 @@ class Panel(widgets.HBox):
         # a wide figure, e.g. two subplots side by side)
         side = widgets.VBox([*controls, self.error_box],
                             layout=widgets.Layout(margin="0.5em 0 0 0" if below else "0 0 0 1em"))
+        # the figure keeps its size: a flex row may otherwise shrink the canvas, which then shows
+        # only part of the picture (its left side cut, as seen in a narrow browser column)
+        live.widget.layout.flex = "0 0 auto"
         super().__init__([live.widget, side],
                          layout=widgets.Layout(flex_flow="column" if below else "row wrap",
                                                align_items="flex-start"))

@@ -174,7 +174,7 @@ class StepThroughPanel(Panel):
         ax.plot(*line_in_box(start[:3, 3], start[:3, 2], lo, hi).T, ":", color=axis_colors()[2], lw=1)
         # moving: the frame being carried (with its x, y, z letters), and the path its origin has travelled
         self.moving_axes = self._triad(ax, start, lw=3.5, alpha=1.0)
-        self.moving_letters = [ax.plot([], [], [], ls="", marker=m, ms=12, color=c)[0]
+        self.moving_letters = [ax.plot([], [], [], ls="", marker=m, ms=13, mew=0, color=c)[0]
                                for c, m in zip(axis_colors(), LETTER_MARKERS)]
         self.path, = ax.plot([], [], [], "--", color="0.4", lw=1)
         live.add_moving(*self.moving_axes, *self.moving_letters, self.path)

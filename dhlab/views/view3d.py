@@ -71,7 +71,7 @@ class RobotView3D(RobotView):
                                          solid_capstyle="round")
         self.axis_lines = [ax.plot([], [], [], "-", color=c, lw=2.5, alpha=alpha, zorder=3)[0]
                            for c in self.colors] if self.show_triads else []
-        self.letter_marks = [ax.plot([], [], [], ls="", marker=m, ms=LETTER_SIZE, color=c, alpha=alpha,
+        self.letter_marks = [ax.plot([], [], [], ls="", marker=m, ms=LETTER_SIZE, mew=0, color=c, alpha=alpha,
                                      zorder=3.1, visible=self._labels_on)[0]
                              for c, m in zip(self.colors, LETTER_MARKERS)] if self.show_triads else []
         self.ee_marker, = ax.plot([], [], [], "*", color=EE_COLOR, mec="k", ms=15 if self.mechanism is None else 12,

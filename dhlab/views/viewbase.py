@@ -23,6 +23,7 @@ LINK_COLOR = "0.25"
 EE_COLOR = "darkorange"
 JOINT_AXIS_COLOR = "0.55"
 TRIAD_FRACTION = 0.13       # triad length as a fraction of the robot's typical size
+LINK_FRACTION = 0.25        # ... and at least this fraction of its typical link
 MAX_LIMIT = 1e6             # a joint limit beyond this cannot be drawn (1e308 is "no limit")
 STYLES = ("mechanism", "stick")
 LETTER_SIZE = 10            # points: the x, y, z at the tips of the triads
@@ -98,6 +99,15 @@ def typical_size(robot, samples: int = 200) -> float:
     return size if size > 1e-9 else 1.0
 
 
+def triad_length(robot, size: float) -> float:
+    """How long a triad is drawn: a fraction of the robot's size, and at least a third of its
+    typical link, so that a two-link arm's frames read as well as a seven-joint arm's."""
+    origins = np.asarray(robot.frames(default_q(robot)), dtype=float)[:, :3, 3]
+    links = np.linalg.norm(np.diff(origins, axis=0), axis=1)
+    links = links[links > 1e-6 * size]
+    return max(TRIAD_FRACTION * size, LINK_FRACTION * float(np.median(links)) if len(links) else 0.0)
+
+
 def line_in_box(point, direction, lo, hi) -> np.ndarray:
     """The two ends of the piece of the line ``point + t·direction`` inside the box
     [lo, hi] (matplotlib's 3D axes do not clip lines at their limits)."""
@@ -147,7 +157,7 @@ class RobotView:
         self.colors = axis_colors(palette)
         self.box = workspace_box(robot)
         size = typical_size(robot)
-        self.triad_length = TRIAD_FRACTION * size
+        self.triad_length = triad_length(robot, size)
         self.has_tool = not np.allclose(np.asarray(robot.tool, dtype=float), np.eye(4))
         self.mechanism = Mechanism(robot, size) if self.style == "mechanism" else None
         self.shape = None                     # the mechanism at the current pose

@@ -123,6 +123,7 @@ def test_teach_panel_in_jupyterlab(lab_page, lab_root, results_dir, backend):
         open_notebook(page, f"teach/{path.name}")
         run_all(page)
         check_panel(page, backend)
+        page.screenshot(path=str(results_dir / f"teach_demo-{backend}.png"))   # to look at
     except Exception:
         page.screenshot(path=str(results_dir / f"teach_demo-{backend}-failure.png"))
         raise
