@@ -7,10 +7,11 @@ Angles are radians in the API (``deg(30)`` converts), lengths in the robot's uni
 >>> puma.fk(puma.qz).round(5)[:3, 3].tolist()
 [0.4521, -0.15005, 0.4318]
 """
-from . import assign, ik, lines, robots, symbolic, transforms
+from . import assign, ik, lines, mdh, robots, symbolic, transforms
 from .assign import DHAssignment, dh_assignment, dh_from_axes, joint_axes
 from .chain import Link, Move, Robot, Rot
 from .dh import DHRobot, PrismaticDH, RevoluteDH
+from .mdh import MDHRobot, PrismaticMDH, RevoluteMDH, to_modified, to_standard
 from .symbolic import compact, legend
 from .table import DHTable
 from .transforms import Rx, Ry, Rz, Tr, Tx, Tz, check_rigid, dh_matrix, inv, is_rigid, rpy, trans
@@ -22,6 +23,7 @@ __all__ = [
     "Rx", "Ry", "Rz", "Tr", "trans", "Tx", "Tz", "dh_matrix", "inv", "is_rigid", "check_rigid", "rpy",
     "deg", "rad", "compact", "legend", "DHLabError", "robots", "ik", "symbolic", "transforms",
     "dh_from_axes", "dh_assignment", "joint_axes", "DHAssignment", "assign", "lines",
+    "MDHRobot", "RevoluteMDH", "PrismaticMDH", "to_modified", "to_standard", "mdh",
 ]
 __version__ = "0.1.0"
 

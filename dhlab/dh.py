@@ -32,7 +32,7 @@ from .table import DHTable
 from .transforms import Rx, Rz
 from .units import Angle
 from .units import has_angle_mark
-from .validation import DHLabError, as_angle, as_choice, as_length, as_number, describe
+from .validation import DHLabError, as_angle, as_choice, as_length, as_number, as_sequence, describe
 
 __all__ = ["RevoluteDH", "PrismaticDH", "DHRobot"]
 
@@ -54,8 +54,11 @@ def _check_length_param(value, name: str):
     return as_length(value, name, symbolic=True)
 
 
-class DHLink(Link):
-    """Common part of RevoluteDH and PrismaticDH: the four DH parameters."""
+class DHParameters(Link):
+    """A link given by the four DH parameters θ, d, a, α (checked) and its joint; the
+    convention (:class:`DHLink` here, :class:`~dhlab.mdh.MDHLink`) orders the four motions."""
+
+    convention = ""              # "standard" or "modified"
 
     def __init__(self, theta, d, a, alpha, offset, revolute: bool, qlim, name):
         self.theta = _check_angle_param(theta, "theta")
@@ -64,15 +67,31 @@ class DHLink(Link):
         self.alpha = _check_angle_param(alpha, "alpha")
         if revolute:
             self.offset = _check_angle_param(offset, "offset (added to the joint angle)")
-            factors = [Rot("z", self.offset, joint=True), Move("z", self.d)]
+            along_z = [Rot("z", self.offset, joint=True), Move("z", self.d)]
         else:
             self.offset = _check_length_param(offset, "offset (added to the joint displacement)")
-            factors = [Rot("z", self.theta), Move("z", self.offset, joint=True)]
-        super().__init__(factors + [Move("x", self.a), Rot("x", self.alpha)], name=name, qlim=qlim)
+            along_z = [Rot("z", self.theta), Move("z", self.offset, joint=True)]
+        along_x = [Move("x", self.a), Rot("x", self.alpha)]      # Tx(a) and Rx(α) commute
+        super().__init__(self.motions(along_z, along_x), name=name, qlim=qlim)
+
+    @staticmethod
+    def motions(along_z: list, along_x: list) -> list:
+        raise NotImplementedError
 
     def __repr__(self):
         kind = type(self).__name__
         return f"{kind}(theta={self.theta}, d={self.d}, a={self.a}, alpha={self.alpha}, offset={self.offset})"
+
+
+class DHLink(DHParameters):
+    """Common part of RevoluteDH and PrismaticDH: ``A_i = Rz(θ_i)·Tz(d_i)·Tx(a_i)·Rx(α_i)``."""
+
+    convention = "standard"
+
+    @staticmethod
+    def motions(along_z: list, along_x: list) -> list:
+        """Standard DH: first along z_(i−1) (θ_i, d_i), then along x_i (a_i, α_i)."""
+        return along_z + along_x
 
 
 class RevoluteDH(DHLink):
@@ -95,6 +114,7 @@ class DHRobot(Robot):
 
     def __init__(self, links, name: str = "robot", base=None, tool=None,
                  params=None, joint_symbols=None, unit: str = ""):
+        _no_modified_links(links)
         links = _link_list(links, DHLink, "RevoluteDH(...) or PrismaticDH(...) (for other products of "
                                           "motions use dhlab.Robot)")
         super().__init__(links, name=name, base=base, tool=tool, params=params,
@@ -147,38 +167,55 @@ class DHRobot(Robot):
         ``params`` gives the numbers of the other symbols, e.g. ``{"l1": 1}``;
         ``qlim`` one (low, high) per row, in the table's angle unit for revolute joints.
         """
-        angles = as_choice(angles, ("deg", "rad"), "angles")
-        params = _numeric_params(params)
-        rows = _rows(rows)
-        limits_per_row = _table_qlim(qlim, len(rows))
-        to_rad = (lambda e: e * sp.pi / 180) if angles == "deg" else (lambda e: e)
-        links, symbols = [], []
-        for i, row in enumerate(rows, start=1):
-            theta, d, a, alpha = (_parse(v, f"row {i}, {col}", col in "θα" and angles == "deg")
-                                  for v, col in zip(row, "θdaα"))
-            limits = limits_per_row[i - 1]
-            if angles == "deg":
-                _no_marked_angles(params, {"θ": theta, "α": alpha}, i)
-            q = _joint_symbol(theta, params)
-            if q is not None:
-                offset = to_rad(_offset(theta, q, f"row {i}, θ"))
-                if limits is not None and angles == "deg":
-                    limits = _degrees_to_radians(limits, f"qlim[{i - 1}] (row {i}, degrees)")
-                links.append(RevoluteDH(d=d, a=a, alpha=to_rad(alpha), offset=offset, qlim=limits))
-            else:
-                q = _joint_symbol(d, params)
-                if q is None:
-                    raise DHLabError(
-                        f"row {i} {row!r} has no joint variable: θ (revolute) or d (prismatic) must "
-                        f"contain a symbol such as q{i} that params does not give a value."
-                    )
-                links.append(PrismaticDH(theta=to_rad(theta), a=a, alpha=to_rad(alpha),
-                                         offset=_offset(d, q, f"row {i}, d"), qlim=limits))
-            if str(q) in symbols:
-                raise DHLabError(f"rows {symbols.index(str(q)) + 1} and {i} both use {q} as their joint variable: "
-                                 "every joint needs its own (q1, q2, …).")
-            symbols.append(str(q))
+        links, symbols, params = links_from_table(rows, params, angles, qlim, RevoluteDH, PrismaticDH)
         return cls(links, name=name, params=params, joint_symbols=symbols, **kwargs)
+
+
+def links_from_table(rows, params, angles, qlim, revolute, prismatic) -> tuple:
+    """The links of a table typed as on the slides (see :meth:`DHRobot.from_table`), made by
+    the link classes ``revolute`` and ``prismatic``: (links, joint symbols, params)."""
+    angles = as_choice(angles, ("deg", "rad"), "angles")
+    params = _numeric_params(params)
+    rows = _rows(rows)
+    limits_per_row = _table_qlim(qlim, len(rows))
+    to_rad = (lambda e: e * sp.pi / 180) if angles == "deg" else (lambda e: e)
+    links, symbols = [], []
+    for i, row in enumerate(rows, start=1):
+        theta, d, a, alpha = (_parse(v, f"row {i}, {col}", col in "θα" and angles == "deg", col in "da")
+                              for v, col in zip(row, "θdaα"))
+        limits = limits_per_row[i - 1]
+        if angles == "deg":
+            _no_marked_angles(params, {"θ": theta, "α": alpha}, i)
+        q = _joint_symbol(theta, params)
+        if q is not None:
+            offset = to_rad(_offset(theta, q, f"row {i}, θ"))
+            if limits is not None and angles == "deg":
+                limits = _degrees_to_radians(limits, f"qlim[{i - 1}] (row {i}, degrees)")
+            links.append(revolute(d=d, a=a, alpha=to_rad(alpha), offset=offset, qlim=limits))
+        else:
+            q = _joint_symbol(d, params)
+            if q is None:
+                raise DHLabError(
+                    f"row {i} {row!r} has no joint variable: θ (revolute) or d (prismatic) must "
+                    f"contain a symbol such as q{i} that params does not give a value."
+                )
+            links.append(prismatic(theta=to_rad(theta), a=a, alpha=to_rad(alpha),
+                                   offset=_offset(d, q, f"row {i}, d"), qlim=limits))
+        if str(q) in symbols:
+            raise DHLabError(f"rows {symbols.index(str(q)) + 1} and {i} both use {q} as their joint variable: "
+                             "every joint needs its own (q1, q2, …).")
+        symbols.append(str(q))
+    return links, symbols, params
+
+
+def _no_modified_links(links) -> None:
+    """A modified-DH link (RevoluteMDH) in a standard DH robot: say which convention it is."""
+    if isinstance(links, (list, tuple)):
+        for i, link in enumerate(links, start=1):
+            if getattr(link, "convention", "") == "modified":
+                raise DHLabError(f"link {i} is a modified-DH (Craig) link, {type(link).__name__}: a DHRobot is "
+                                 "standard DH. Build the robot with dhlab.MDHRobot, or convert it with "
+                                 "dhlab.to_standard(dhlab.MDHRobot(links)).")
 
 
 def _no_marked_angles(params, angles: dict, i: int) -> None:
@@ -195,18 +232,12 @@ def _no_marked_angles(params, angles: dict, i: int) -> None:
 def _rows(rows) -> list:
     """The table as a list of rows of 4 entries, or a clear error."""
     example = "[('q1', 0, 1, 0), ('q2', 0, 0.5, 0)]"
-    if isinstance(rows, (str, bytes, dict)) or not hasattr(rows, "__iter__"):
-        raise DHLabError(f"the table must be a list of rows (θ, d, a, α), e.g. {example}; got {describe(rows)}.")
-    try:
-        rows = list(rows)
-    except TypeError:            # iterable in name only, e.g. a 0-d numpy array
-        raise DHLabError(f"the table must be a list of rows (θ, d, a, α), e.g. {example}; "
-                         f"got {describe(rows)}.") from None
+    rows = as_sequence(rows, "the table", f"a list of rows (θ, d, a, α), e.g. {example}")
     if not rows:
         raise DHLabError(f"the table is empty: give one row (θ, d, a, α) per joint, e.g. {example}.")
     for i, row in enumerate(rows, start=1):
         try:
-            count = None if isinstance(row, (str, bytes, dict)) else len(row)
+            count = None if isinstance(row, (str, bytes, dict, set, frozenset)) else len(row)
         except TypeError:        # no length (a number, a 0-d array)
             count = None
         if count != 4:
@@ -218,9 +249,7 @@ def _rows(rows) -> list:
 def _table_qlim(qlim, n: int) -> list:
     if qlim is None:
         return [None] * n
-    if isinstance(qlim, (str, bytes, dict)) or not hasattr(qlim, "__len__") or len(qlim) != n:
-        raise DHLabError(f"qlim must give one (low, high) per row ({n} rows), got {describe(qlim)}.")
-    return list(qlim)
+    return as_sequence(qlim, "qlim", f"one (low, high) per row ({n} rows)", size=n)
 
 
 def _degrees_to_radians(limits, name: str) -> tuple:
@@ -228,19 +257,20 @@ def _degrees_to_radians(limits, name: str) -> tuple:
     if has_angle_mark(limits):
         raise DHLabError(f"{name}: the table's angles are degrees, so write the limits as plain degrees "
                          f"(e.g. (-90, 90)), not with deg(); got {describe(limits)}.")
-    if isinstance(limits, (str, bytes, dict)) or not hasattr(limits, "__len__") or len(limits) != 2:
-        raise DHLabError(f"{name} must be two numbers (low, high), got {describe(limits)}.")
+    limits = as_sequence(limits, name, "two numbers (low, high)", size=2)
     return tuple(float(v) for v in np.radians([as_number(v, name) for v in limits]))
 
 
 _TEXT = re.compile(r"[\w\s+\-*/().]*")
 
 
-def _parse(value, where: str, degrees: bool = False):
+def _parse(value, where: str, degrees: bool = False, length: bool = False):
     """A table entry as a sympy number or expression, checked (finite, real)."""
     if degrees and has_angle_mark(value):
         raise DHLabError(f"{where} = {value!r} is already in radians (made by deg()), but this table's "
                          "angles are degrees: write the plain number of degrees (e.g. 90), or pass angles='rad'.")
+    if length and has_angle_mark(value):
+        raise DHLabError(f"{where} is a length, but you gave an angle ({describe(value)}): pass a plain number.")
     if isinstance(value, str):
         text = value.replace("θ", "theta").replace("−", "-").replace("°", "").replace("º", "")
         text = re.sub(r"\s+", " ", text).strip()

@@ -16,7 +16,7 @@ import sympy as sp
 
 from .chain import Link, Move, Robot, Rot
 from .dh import DHRobot
-from .validation import as_flag, as_length
+from .validation import DHLabError, as_flag, as_length
 
 __all__ = [
     "robot_no_tan_elemental_1", "robot_no_tan_elemental_2", "pr_mechanism",
@@ -28,9 +28,19 @@ L1, L2, L3, L4, L = sp.symbols("l1 l2 l3 l4 l")
 
 
 def _lengths(**lengths) -> dict:
-    """The factory's length arguments as params, each read by as_length (a deg() angle is refused);
-    text is left to the robot's params check ("parameter l1 = 'long' must be a finite number")."""
-    return {name: value if isinstance(value, str) else as_length(value, name) for name, value in lengths.items()}
+    """The factory's length arguments as params, each read by :func:`_link_length`; text is left to
+    the robot's params check ("parameter l1 = 'long' must be a finite number")."""
+    return {name: value if isinstance(value, str) else _link_length(value, name) for name, value in lengths.items()}
+
+
+def _link_length(value, name: str) -> float:
+    """A length of the robot's drawing (l1, d_max …): a number ≥ 0, read by as_length (a deg() angle is
+    refused). A negative one is a mistake: where a seed's table needs −l2, the table writes the sign."""
+    value = as_length(value, name)
+    if value < 0:
+        raise DHLabError(f"{name} = {value:g} is a length of the robot's links: it must be 0 or more. Where a "
+                         "table needs a negative a or d, the table itself writes the sign (e.g. '-l2').")
+    return value + 0.0                 # -0.0 -> 0.0
 
 
 def robot_no_tan_elemental_1(l1: float = 0.70, l2: float = 0.30) -> Robot:
@@ -51,7 +61,7 @@ def robot_no_tan_elemental_2(l: float = 0.70, d_max: float = 0.30) -> Robot:
     ⁰H₁ = Rz(θ)·Tr(0, l, 0), ¹H₂ = Tr(0, d, 0).
     """
     return Robot([Link([Rot("z", joint=True), Move("y", L)], name="link 1"),
-                  Link([Move("y", joint=True)], name="link 2", qlim=(0.0, as_length(d_max, "d_max")))],
+                  Link([Move("y", joint=True)], name="link 2", qlim=(0.0, _link_length(d_max, "d_max")))],
                  name="robot no tan elemental 2 (seed 004)", params=_lengths(l=l),
                  joint_symbols=("theta", "d"), unit="m")
 

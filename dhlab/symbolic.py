@@ -22,10 +22,13 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 from fractions import Fraction
 
+import numpy as np
 import sympy as sp
 from sympy.simplify.fu import TR10i
+from sympy.utilities.exceptions import SymPyDeprecationWarning
 
 __all__ = ["exact", "exact_angle", "exact_length", "chain_product", "simplify_chain", "compact", "legend",
            "count_ops", "tree_size"]
@@ -37,6 +40,8 @@ _NICE = [(sp.Integer(0), 0.0), (sp.Integer(1), 1.0), (sp.Rational(1, 2), 0.5),
 
 def exact_angle(value):
     """A radian value as an exact multiple of π when it is a whole number of degrees."""
+    from .validation import as_angle
+    value = as_angle(value, "the angle (radians)", symbolic=True, turns=100)
     if isinstance(value, sp.Basic):
         return value
     degrees = math.degrees(float(value))
@@ -47,6 +52,8 @@ def exact_angle(value):
 
 def exact_length(value):
     """A number as a small fraction when it is one (2.5 -> 5/2), else a float."""
+    from .validation import as_length
+    value = as_length(value, "the length", symbolic=True)
     if isinstance(value, sp.Basic):
         return value
     frac = Fraction(float(value)).limit_denominator(100)
@@ -196,17 +203,24 @@ def _check_finite_entries(M, who: str) -> None:
 
 def _joint_arguments(M, q_symbols, who: str):
     """``M`` as a sympy object and the joint symbols as the symbols of ``M`` (names accepted)."""
-    from .validation import DHLabError, describe
-    if isinstance(M, (str, bytes)) or isinstance(M, bool):
+    from .validation import DHLabError, as_number, describe
+    if isinstance(M, (str, bytes)) or isinstance(M, bool) or M is np.ma.masked or isinstance(M, np.ma.MaskedArray):
         raise DHLabError(f"{who}: M must be a sympy Matrix or expression (e.g. robot.fk_sym()), got {describe(M)}.")
     try:
-        M = sp.Matrix(M) if isinstance(M, (list, tuple)) else sp.sympify(M, strict=True)
-    except (sp.SympifyError, TypeError, ValueError):
+        with warnings.catch_warnings():          # sympy only warns about a list inside a Matrix entry
+            warnings.simplefilter("error", SymPyDeprecationWarning)
+            M = sp.Matrix(M) if isinstance(M, (list, tuple)) else sp.sympify(M, strict=True)
+    except (sp.SympifyError, TypeError, ValueError, SymPyDeprecationWarning):
         raise DHLabError(f"{who}: M must be a sympy Matrix or expression (e.g. robot.fk_sym()), "
                          f"got {describe(M)}.") from None
-    if not isinstance(M, (sp.Expr, sp.MatrixBase)):
+    entries = M if isinstance(M, sp.MatrixBase) else [M]
+    if not isinstance(M, (sp.Expr, sp.MatrixBase)) or not all(isinstance(e, sp.Expr) for e in entries):
         raise DHLabError(f"{who}: M must be a sympy Matrix or expression, got {describe(M)}.")
+    if isinstance(M, sp.MatrixBase) and not M:
+        raise DHLabError(f"{who}: M is an empty matrix: pass a sympy Matrix such as robot.fk_sym().")
     _check_finite_entries(M, who)
+    for k, e in enumerate(entries):      # real: a pose has no imaginary part, and a float overflows no entry
+        as_number(e, f"{who}: M[{k}]" if isinstance(M, sp.MatrixBase) else f"{who}: M", symbolic=True)
     q_symbols = list(q_symbols) if isinstance(q_symbols, (list, tuple)) else [q_symbols]
     by_name = {s.name: s for s in M.free_symbols if isinstance(s, sp.Symbol)}
     out = []

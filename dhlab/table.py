@@ -1,7 +1,9 @@
 """Display of a DH table in the seeds' column order θ, d, a, α, angles in degrees.
 
 Joint variables appear as on the slides, with their offset: ``q2 + 90°``.
-A table renders as HTML in Jupyter and as aligned text in a terminal.
+A table renders as HTML in Jupyter and as aligned text in a terminal. The table of a
+modified-DH (Craig) robot has the same columns, headed with what row i holds there:
+θ_i, d_i, a_(i−1), α_(i−1) (see :mod:`dhlab.mdh`).
 """
 from __future__ import annotations
 
@@ -45,6 +47,7 @@ class DHTable:
     """The DH table of a :class:`~dhlab.DHRobot`, for display (``print`` or Jupyter)."""
 
     header = ("i", "θ", "d", "a", "α", "joint")
+    modified_header = ("i", "θ_i", "d_i", "a_(i−1)", "α_(i−1)", "joint")
 
     def __init__(self, robot):
         if not all(hasattr(robot, name) for name in ("links", "joint_labels", "name")) or \
@@ -53,6 +56,9 @@ class DHTable:
             raise DHLabError(f"DHTable shows the table of a DHRobot (e.g. DHTable(dhlab.robots.puma560()), "
                              f"or robot.table()); got {describe(robot)}.")
         self.robot = robot
+        self.modified = all(getattr(link, "convention", "") == "modified" for link in robot.links)
+        if self.modified:
+            self.header = self.modified_header
         self.rows = [self._row(i, link, label) for i, (link, label)
                      in enumerate(zip(robot.links, robot.joint_labels), start=1)]
 
@@ -73,12 +79,15 @@ class DHTable:
         lines = [" | ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in cells]
         return "\n".join(" " + line for line in lines)
 
+    def _title(self, name: str) -> str:
+        return ("modified DH (Craig) table of " if self.modified else "DH table of ") + name
+
     def __repr__(self) -> str:
-        return f"DH table of {self.robot.name!r}:\n{self}"
+        return f"{self._title(repr(self.robot.name))}:\n{self}"
 
     def _repr_html_(self) -> str:
         head = "".join(f"<th>{html.escape(h)}</th>" for h in self.header)
         body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in row) + "</tr>"
                        for row in self.rows)
-        caption = html.escape(f"DH table of {self.robot.name} (angles in degrees)")
+        caption = html.escape(f"{self._title(self.robot.name)} (angles in degrees)")
         return f"<table><caption>{caption}</caption><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"

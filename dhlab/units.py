@@ -101,12 +101,22 @@ def _error(message):
     return DHLabError(message)
 
 
-def _degrees_in(x, what: str):
-    """``x`` checked to be real numbers (a number or a rectangular array), as floats."""
+MOST_TURNS = 100          # no angle of a robot turns more: a larger value is not an angle (a length? a typo?)
+
+
+def _degrees_in(x, what: str, full_turn: float):
+    """``x`` checked to be real numbers (a number or a rectangular array) of at most
+    :data:`MOST_TURNS` turns (``full_turn`` is 360 or 2π in the unit of ``x``), as floats."""
     from .validation import as_float_array, as_number
     if isinstance(x, (list, tuple, np.ndarray, sp.MatrixBase)):
-        return as_float_array(x, what, finite=True)
-    return np.array(as_number(x, what))
+        values = as_float_array(x, what, finite=True)
+    else:
+        values = np.array(as_number(x, what))
+    if values.size and np.abs(values).max() > MOST_TURNS * full_turn:
+        raise _error(f"{what} = {np.abs(values).max():g} is too large, more than {MOST_TURNS} full turns: "
+                     "no angle of a robot turns that far. Check the number (is it a length, or a value in the "
+                     "other unit?).")
+    return values
 
 
 def deg(x):
@@ -121,7 +131,7 @@ def deg(x):
     if has_angle_mark(x):
         raise _error(f"deg(x): x = {_short(x)} is already in radians (it was made by deg()): "
                      "do not convert twice, use the value as it is.")
-    values = _degrees_in(x, "deg(x): x (degrees)")
+    values = _degrees_in(x, "deg(x): x (degrees)", 360.0)
     if values.ndim == 0:
         return Angle(math.radians(float(values)))
     return np.radians(values).view(AngleArray)
@@ -136,10 +146,6 @@ def rad(x):
     """
     if isinstance(x, sp.Expr) and x.free_symbols:
         return x * 180 / sp.pi
-    values = _degrees_in(x, "rad(x): x (radians)")
-    with np.errstate(over="ignore"):
-        degrees = math.degrees(float(values)) if values.ndim == 0 else np.degrees(np.asarray(values, dtype=float))
-    if not np.all(np.isfinite(degrees)):
-        raise _error(f"rad(x): x = {np.abs(values).max():g} rad is too large: in degrees it is more than the "
-                     "largest float. Check the number (an angle of a robot is at most a few turns).")
+    values = _degrees_in(x, "rad(x): x (radians)", 2 * math.pi)
+    degrees = math.degrees(float(values)) if values.ndim == 0 else np.degrees(np.asarray(values, dtype=float))
     return float(degrees) if values.ndim == 0 else degrees

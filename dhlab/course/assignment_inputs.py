@@ -117,7 +117,10 @@ def part_number(part) -> int:
 
 
 def joint_value(q, where) -> float:
-    """The joint value of one T_i: radians where q_i is in θ_i, metres where it is in d_i."""
+    """The joint value of one T_i: radians where q_i is in θ_i, metres where it is in d_i
+    (``where`` is 'θ' or 'd'; None for a row without a joint variable)."""
+    if not isinstance(where, (str, type(None))):
+        raise DHLabError(f"where must say which entry holds the joint variable, 'θ' or 'd', got {describe(where)}.")
     return as_length(q, "q") if where == "d" else as_angle(q, "q")
 
 

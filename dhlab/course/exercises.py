@@ -44,7 +44,7 @@ import sympy as sp
 
 from ..transforms import Rx, Ry, Rz, inv, trans
 from ..units import deg
-from ..validation import DHLabError
+from ..validation import DHLabError, as_angle, as_vector, check_length_size
 from .feedback import NOT_ANSWERED, Exercise, Feedback
 from .matrix_checks import TRANSPOSED_ROTATION, check_function, check_matrix
 from .value_checks import check_solutions, check_value
@@ -142,6 +142,9 @@ def seed001_DefinirTHz(dtheta, d):
 
     ``dtheta`` in radians (the C++ ``AplicarTHz`` converts degrees first), ``d`` = (x, y, z).
     """
+    dtheta, d = as_angle(dtheta, "dtheta (radians)"), as_vector(d, "d = (x, y, z)", 3)
+    for k, v in enumerate(d):
+        check_length_size(abs(v), f"d[{k}]")
     THz = np.zeros((4, 4))
     THz[0][0] = -math.cos(dtheta)
     THz[0][1] = -math.sin(dtheta)

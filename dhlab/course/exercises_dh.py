@@ -11,7 +11,9 @@ the checks that need the geometry of DH frames, in four modules re-exported here
 * :mod:`~dhlab.course.exercises_dh_ssrms`: notebook 7 (7.1-7.3, the SSRMS's C++ program).
 
 The feedback names the joint and the quantity that is off ("joint 2: your α1 is -90°, but z0
-and z1 are parallel") without giving the answer away, and no answer makes a check raise.
+and z1 are parallel") without giving the answer away, and no answer makes a check raise. A row,
+a table or a link matrix written in modified DH (Craig's convention, :mod:`dhlab.mdh`) is named
+as such ("this table is in modified DH (Craig): …"), with what the course's standard DH changes.
 
 >>> ex = exercise("5.1")
 >>> ex.check({1: "skew", 2: "parallel", 3: "intersect"})

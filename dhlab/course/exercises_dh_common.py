@@ -13,8 +13,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..chain import Robot
+from ..dh import DHRobot
+from ..mdh import MDHRobot
 from ..lines import Line, relation
-from ..validation import DHLabError, as_index, describe
+from ..validation import DHLabError, as_index, as_tolerance, describe
 from .answers import Refused, is_unanswered, to_vector
 from .exercises import NOT_ANSWERED, Feedback
 from .feedback import short_repr
@@ -89,11 +91,17 @@ def _whole_number(value):
 
 
 # --- the teacher's arguments of a check -----------------------------------------------------------
-def _as_robot(robot, name: str = "robot", kind=Robot, joints: int = 1):
-    """``robot`` checked: a dhlab robot of class ``kind`` with at least ``joints`` joints."""
+def _as_robot(robot, name: str = "robot", kind=DHRobot, joints: int = 1):
+    """``robot`` checked: a dhlab robot of class ``kind`` (default a standard-DH robot, whose frame
+    k−1 has its z on joint k's axis: the checks read the axes there) with at least ``joints`` joints."""
     if not isinstance(robot, kind):
+        hint = ""
+        if isinstance(robot, MDHRobot) and kind is DHRobot:
+            hint = " It is a modified-DH (Craig) robot: convert it with dhlab.to_standard(robot)."
+        elif isinstance(robot, Robot) and kind is DHRobot:
+            hint = " (a robot built from motions has no DH frames: build it with DHRobot.from_table)."
         raise DHLabError(f"{name} must be a dhlab {kind.__name__}, e.g. dhlab.robots.ssrms(), "
-                         f"got {describe(robot)}.")
+                         f"got {describe(robot)}.{hint}")
     if robot.n < joints:
         raise DHLabError(f"{name} has {robot.n} joint{'s' if robot.n != 1 else ''}; this check needs "
                          f"at least {joints}.")
@@ -132,6 +140,7 @@ def axis_relation(p1, u1, p2, u2, tol: float = 1e-9) -> Relation:
     >>> axis_relation([0, 0, 0], [0, 0, 1], [0.2, 0, 0.5], [0, 1, 0]).kind
     'skew'
     """
+    tol = as_tolerance(tol, "tol")
     a, b = Line(p1, u1), Line(p2, u2)
     scale = max(1.0, float(np.abs(a.point).max()), float(np.abs(b.point).max()))
     rel = relation(a, b, tol=tol * scale, angle_tol=1e-9)

@@ -16,7 +16,9 @@ import sympy as sp
 from .. import robots
 from ..dh import DHRobot
 from ..lines import Line, closest_points
-from ..validation import DHLabError, as_flag, describe
+from ..mdh import MDHRobot, to_standard
+from ..validation import (DHLabError, as_flag, as_length, as_matrix4, as_sequence, as_text, as_vector,
+                          check_length_size, describe)
 from .exercises import Feedback
 from .exercises_dh_common import (ANGLE_TOL, _as_robot, _as_samples, _axes_of, _blank, _num, _right, _row_of,
                                   _short, _unanswered, _vec, _wrong, axis_relation)
@@ -39,17 +41,20 @@ def show_axes(axes, tool=None, ax=None, length: float = 0.3, title: str = ""):
     (its ``.figure`` is a :func:`~dhlab.views.figures.new_figure`: the last line of a cell shows it)."""
     from ..views.figures import new_figure        # a picture on a first Run All, readable on a projector
 
+    axes, tool = _drawn_axes(axes), _drawn_tool(tool)
+    length, title = as_length(length, "length"), as_text(title, "title")
+    if not 0 < length <= 1e6:
+        raise DHLabError(f"length (of the drawn arrows) must be a positive number, got {describe(length)}.")
     if ax is None:
         ax = new_figure((6.0, 4.8)).add_subplot(projection="3d")
-    points = [np.asarray(p, float) for p, _, _ in axes]
+    elif not hasattr(ax, "quiver") or getattr(ax, "name", "") != "3d":
+        raise DHLabError(f"ax must be a 3D matplotlib Axes (fig.add_subplot(projection='3d')), got {describe(ax)}.")
+    points = [p for p, _, _ in axes]
     for k, (p, u, kind) in enumerate(axes, start=1):
-        p, u = np.asarray(p, float), np.asarray(u, float) / np.linalg.norm(u)
         ax.plot(*np.array([p - length * u, p + 1.6 * length * u]).T, ":", color="0.5")
         ax.quiver(*p, *(length * u), color="tab:blue", arrow_length_ratio=0.3, lw=2)
         ax.text(*(p + 1.15 * length * u), f" {k}", fontsize=12, color="tab:blue", weight="bold")
     if tool is not None:
-        tool = np.asarray(tool, float)
-        tool = tool[:3, 3] if tool.shape == (4, 4) else tool
         ax.plot(*tool[:, None], "*", color="darkorange", mec="k", ms=14)
         points.append(tool)
     P = np.array(points)
@@ -63,6 +68,37 @@ def show_axes(axes, tool=None, ax=None, length: float = 0.3, title: str = ""):
     ax.locator_params(nbins=4)
     ax.set_box_aspect(hi - lo, zoom=0.85)              # room for the tick and axis labels
     return ax
+
+
+def _drawn_axes(axes) -> list:
+    """show_axes' ``axes``: (point, direction, kind) triples, points and nonzero directions of 3 numbers."""
+    items = as_sequence(axes, "axes", "a list of (point, direction, kind), e.g. [((0, 0, 0), (0, 0, 1), 'R')]")
+    if not items:
+        raise DHLabError("axes is empty: give at least one (point, direction, kind).")
+    out = []
+    for k, item in enumerate(items):
+        if not isinstance(item, (tuple, list)) or len(item) != 3:
+            raise DHLabError(f"axes[{k}] must be (point, direction, kind), got {describe(item)}.")
+        p = as_vector(item[0], f"axes[{k}] point", 3)
+        u = as_vector(item[1], f"axes[{k}] direction", 3)
+        for v, what in ((p, "point"), (u, "direction")):
+            check_length_size(float(np.abs(v).max()), f"axes[{k}] {what}")
+        if not np.linalg.norm(u) > 0:
+            raise DHLabError(f"axes[{k}] direction is (0, 0, 0): an axis needs a direction.")
+        out.append((p, u / np.linalg.norm(u), item[2]))
+    return out
+
+
+def _drawn_tool(tool):
+    """show_axes' ``tool``: None, a point (x, y, z), or a 4x4 pose (its position is drawn)."""
+    if tool is None:
+        return None
+    try:
+        point = as_vector(tool, "tool (a point (x, y, z) or a 4x4 pose)", 3)
+    except DHLabError:
+        point = as_matrix4(tool, "tool (a point (x, y, z) or a 4x4 pose)")[:3, 3]
+    check_length_size(float(np.abs(point).max()), "tool")
+    return point
 
 
 # --- 5.3 and 6.3: a whole table, checked fairly --------------------------------------------------
@@ -201,6 +237,31 @@ def _row_problem(rows) -> str:
     return ""
 
 
+# The column orders a table from Craig's convention comes in: the course's (θ, d, a, α), Craig's own
+# (α_(i−1), a_(i−1), d_i, θ_i), and the Robotics Toolbox's printout (a_(i−1), α_(i−1), θ_i, d_i).
+_MODIFIED_ORDERS = (("", lambda r: (r[0], r[1], r[2], r[3])),
+                    (" in Craig's column order (α_(i−1), a_(i−1), d_i, θ_i)", lambda r: (r[3], r[2], r[1], r[0])),
+                    (" in the column order (a_(i−1), α_(i−1), θ_i, d_i)", lambda r: (r[2], r[3], r[0], r[1])))
+
+
+def _modified_reading(rows, reference, params) -> str:
+    """Why ``rows`` is a right table of ``reference`` in modified DH (Craig), or ''."""
+    for order, reorder in _MODIFIED_ORDERS:
+        try:
+            student = to_standard(MDHRobot.from_table([reorder(tuple(r)) for r in rows], params=params))
+            if compare_robots(student, reference):
+                continue
+        except DHLabError:
+            continue
+        return (f"this table is in modified DH (Craig){order}: each row i holds a_(i−1) and α_(i−1), the "
+                "common normal from the axis of joint i−1, and A_i = Rx(α_(i−1))·Tx(a_(i−1))·Rz(θ_i)·Tz(d_i). "
+                "In that convention it describes this robot. The course uses standard DH: row i holds a_i and "
+                "α_i, measured along and about x_i from z_(i−1) to z_i, and A_i = Rz(θ_i)·Tz(d_i)·Tx(a_i)·Rx(α_i). "
+                "θ_i and d_i stay as they are; move the a and α columns up one row (the last row takes the "
+                "end effector's a_n, α_n), and write each row as (θ, d, a, α).")
+    return ""
+
+
 def check_table(rows, exercise: str = "arm", params=None, different: bool = False) -> Feedback:
     """Check a DH table typed as on the slides, rows ``(θ, d, a, α)`` in degrees with the
     joint variables by name (``"q2 - 90"``, ``"d3"``), against an exercise robot:
@@ -224,12 +285,16 @@ def check_table(rows, exercise: str = "arm", params=None, different: bool = Fals
     try:
         student = DHRobot.from_table([tuple(r) for r in rows], params={**reference.params, **(params or {})})
     except DHLabError as exc:
-        return _wrong(name, [str(exc)])
+        other = _modified_reading(rows, reference, {**reference.params, **(params or {})})
+        return _wrong(name, [other or str(exc)])
     except Exception as exc:       # anything from_table could not read: still feedback, never a traceback
         return _wrong(name, [f"the table could not be read ({type(exc).__name__}): each row is "
                              "(θ, d, a, α), numbers or names such as \"q2 - 90\" or \"l1\"."])
     problems = compare_robots(student, reference)
     if problems:
+        other = _modified_reading(rows, reference, {**reference.params, **(params or {})})
+        if other:
+            return _wrong(name, [other])
         return _wrong(name, problems, "fix this first (the joints after it are checked next).")
     if different and _same_table(student, reference):
         return _wrong(name, ["this is the slide's own table (it is right): the exercise asks for another "

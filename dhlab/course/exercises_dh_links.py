@@ -8,6 +8,7 @@ import sympy as sp
 
 from .. import robots
 from ..dh import DHRobot
+from ..mdh import mdh_matrix
 from ..transforms import dh_matrix
 from ..validation import DHLabError, as_index, as_vector, has_angle_mark
 from .exercises import Feedback, check_matrix, check_value
@@ -64,6 +65,10 @@ def check_link_matrix(M, i: int = 2, robot=None) -> Feedback:
                      f"the sign of α{i} is flipped: it is {_num(math.degrees(float(link.alpha)))}°."))
     mistakes.append((dh_matrix(theta, d, link.a, link.alpha).T,
                      "you wrote the rows as columns: the whole matrix is transposed."))
+    mistakes.append((mdh_matrix(theta, d, link.a, link.alpha),
+                     f"this is the modified DH (Craig) product Rx(α)·Tx(a)·Rz(θ)·Tz(d) of row {i}. The course "
+                     f"uses standard DH: A{i} = Rz(θ{i})·Tz(d{i})·Tx(a{i})·Rx(α{i}), the same four motions with "
+                     f"the ones along z_(i−1) first."))
     return check_matrix(M, robot.A(i), name=name, mistakes=mistakes, index_style="math")
 
 
@@ -81,15 +86,30 @@ def _degrees(q_deg, n: int) -> np.ndarray:
     return values
 
 
+def _spherical_wrist(F, centre, tol: float) -> bool:
+    """True when the axes of joints 4, 5, 6 (z3 through O3, z4 through O4, z5 through O5) all pass
+    through ``centre``."""
+    for k in (3, 4, 5):
+        offset = centre - F[k, :3, 3]
+        if np.linalg.norm(offset - (offset @ F[k, :3, 2]) * F[k, :3, 2]) > tol:
+            return False
+    return True
+
+
 def check_wrist_centre(p, q_deg=WRIST_Q_DEG, robot=None) -> Feedback:
     """Check the wrist centre (x, y, z) of a 6-DOF arm with a spherical wrist (the axes of
     joints 4, 5, 6 meet in O4 = O5) at joint angles ``q_deg`` (degrees).
     Default robot: seed 002's 6-DOF arm."""
     robot = robots.seed002_6dof() if robot is None else _as_robot(robot, joints=6)
+    if robot.n != 6:
+        raise DHLabError(f"robot must be a 6-DOF arm with a spherical wrist; it has {robot.n} joints.")
     q = np.radians(_degrees(q_deg, robot.n))
     F = np.asarray(robot.frames(q), dtype=float)
     T = np.asarray(robot.fk(q), dtype=float)
     centre, p_end, a = F[4, :3, 3], T[:3, 3], T[:3, 2]
+    if not _spherical_wrist(F, centre, 1e-9 * max(1.0, robot.reach())):
+        raise DHLabError(f"{robot.name!r} has no spherical wrist: the axes of joints 4, 5 and 6 do not meet "
+                         "in one point (O4 = O5), so it has no wrist centre to check.")
     l4 = float(np.linalg.norm(p_end - centre))
     mistakes = [(p_end, f"that is the end effector p: the wrist centre is l4 = {_num(l4)} back from p "
                         "along the approach vector a (the third column of T): p_w = p − l4·a."),

@@ -11,6 +11,7 @@ import re
 
 import numpy as np
 
+from ..mdh import mdh_matrix
 from ..transforms import Rx, Rz, dh_matrix, trans
 from ..validation import DHLabError, as_matrix4, describe, rigid_problem
 from .exercises import Feedback
@@ -168,6 +169,23 @@ def _true_row(before, after):
     return math.degrees(theta), float(A[2, 3]), float(a), math.degrees(alpha)
 
 
+def _modified_reading(values, before, after) -> str:
+    """Why ``values`` are the row in modified DH (Craig) but not in standard DH, or ''."""
+    theta, d, a, alpha = values
+    if max(abs(theta), abs(alpha)) > 720 or max(abs(d), abs(a)) > 1e6:
+        return ""                           # not a row of these frames in any convention
+    A = np.linalg.solve(before, after)
+    angles = math.radians(theta), math.radians(alpha)
+    scale = max(1.0, float(np.abs(A[:3, 3]).max()))
+    standard = dh_matrix(angles[0], d, a, angles[1])
+    craig = mdh_matrix(angles[0], d, a, angles[1])
+    if np.allclose(standard, A, atol=1e-3 * scale) or not np.allclose(craig, A, atol=1e-3 * scale):
+        return ""
+    return ("this row is in modified DH (Craig): Rx(α)·Tx(a)·Rz(θ)·Tz(d) with your numbers carries {S_(i−1)} "
+            "onto {S_i}. The course uses standard DH, A = Rz(θ)·Tz(d)·Tx(a)·Rx(α): the same four motions, "
+            "the turn and slide along z_(i−1) first (θ, d), then along x_i (a, α).")
+
+
 def _frame_pair(frames):
     """``frames`` = ({S_(i-1)}, {S_i}): two rigid 4x4 poses."""
     if not isinstance(frames, (list, tuple)) or len(frames) != 2:
@@ -195,6 +213,9 @@ def check_dh_row(answer, frames=None) -> Feedback:
         return _wrong(name, [problem])
     theta, d, a, alpha = values
     t_theta, t_d, t_a, t_alpha = _true_row(before, after)
+    modified = _modified_reading(values, before, after)
+    if modified:
+        return _wrong(name, [modified])
     scale = max(1.0, abs(t_d), abs(t_a))
     near = lambda x, y: abs(x - y) <= 1e-3 * scale
     same_angle = lambda x, y: abs(_angle_diff(x, y)) <= ANGLE_TOL

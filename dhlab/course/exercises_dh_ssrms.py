@@ -165,6 +165,9 @@ def _pressed(joints, n: int) -> tuple:
             raise DHLabError(f"joints must be one joint number or a list of them, got {describe(joints)}.")
         joints = joints.tolist()            # a number (0-d) or a list of numbers
     if isinstance(joints, (list, tuple, set, frozenset, range)):
+        if not len(joints):
+            raise DHLabError("joints is empty: name the joint whose key is pressed (1 … "
+                             f"{n}), or several, e.g. (2, 5).")
         return tuple(dict.fromkeys(as_index(j, "each joint of joints", 1, n) for j in joints))
     return (as_index(joints, "joints", 1, n),)
 

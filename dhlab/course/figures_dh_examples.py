@@ -5,6 +5,7 @@ import math
 
 import numpy as np
 
+from ..validation import DHLabError, as_length, as_text, describe
 from ..views.figures import new_figure
 from ..views.triads import draw_triad, free_direction, letter_points
 from ..views.viewbase import checked_robot, one_pose
@@ -37,7 +38,8 @@ def frame_pairs_figure(robot, q=None, length: float | None = None, titles=None):
     q = one_pose(robot, q)
     F = np.asarray(robot.frames(q), dtype=float)
     origins = F[:, :3, 3]
-    length = float(length) if length else 0.22 * max(float(np.ptp(origins, axis=0).max()), 1e-9)
+    length = _checked_length(length) if length is not None else 0.22 * max(float(np.ptp(origins, axis=0).max()), 1e-9)
+    titles = _checked_titles(titles, robot.n)
     rows = math.ceil(robot.n / 3)
     fig = new_figure((12, 4.3 * rows), layout=None)
     fig.subplots_adjust(left=0.01, right=0.99, bottom=0.01, top=0.93, wspace=0.02, hspace=0.14)
@@ -69,6 +71,21 @@ def frame_pairs_figure(robot, q=None, length: float | None = None, titles=None):
             taken.append(free_direction(ax, T, busy + taken))
         ax.set_title(titles[i - 1] if titles else row_title(robot, i), fontsize=15)
     return fig
+
+
+def _checked_length(length) -> float:
+    length = as_length(length, "length (of the triads)")
+    if not length > 0:
+        raise DHLabError(f"length (of the triads) must be positive, got {length:g}.")
+    return length
+
+
+def _checked_titles(titles, n: int):
+    if titles is None:
+        return None
+    if isinstance(titles, (str, bytes)) or not hasattr(titles, "__len__") or len(titles) != n:
+        raise DHLabError(f"titles must be a list of {n} texts, one per row of the table; got {describe(titles)}.")
+    return [as_text(t, f"titles[{k}]") for k, t in enumerate(titles)]
 
 
 def row_title(robot, i: int) -> str:

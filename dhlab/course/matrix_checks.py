@@ -25,6 +25,8 @@ import math
 import numpy as np
 import sympy as sp
 
+from ..validation import as_choice
+from . import check_options as teacher
 from .answers import Refused, Sampler, canon, close, is_unanswered, rounding_slack, to_sympy_matrix, typed_decimals
 from .feedback import Feedback, correct, unanswered, wrong
 
@@ -133,9 +135,12 @@ def check_matrix(student, expected, *, name: str = "your matrix", symbols=(), to
     ✗ T is not right yet.
       • that is the fixed-frame order (pre-multiplied).
     """
+    name, tol = teacher.name(name), teacher.tolerance(tol)
+    expected = teacher.expected_matrix(expected)
+    symbols, mistakes = teacher.symbol_names(symbols), teacher.mistakes(mistakes)
+    index_style = as_choice(index_style, ("python", "cpp", "math"), "index_style")
     if is_unanswered(student):
         return unanswered(name)
-    expected = to_sympy_matrix(expected, "the expected matrix")
     try:
         got = to_sympy_matrix(student, name)
     except Refused as refusal:
@@ -160,7 +165,7 @@ def check_matrix(student, expected, *, name: str = "your matrix", symbols=(), to
 
     decimals = None if got.free_symbols else typed_decimals(student)
     slack = rounding_slack(decimals)
-    known = [(to_sympy_matrix(w, "a known mistake"), message) for w, message in mistakes]
+    known = [(teacher.expected_matrix(w, "a known mistake"), message) for w, message in mistakes]
     names = allowed | {canon(s) for s in got.free_symbols}
     sampler = Sampler(names.union(*({canon(s) for s in W.free_symbols} for W, _ in known)))
     E, S = sampler.evaluate(expected), sampler.evaluate(got)
@@ -297,6 +302,13 @@ def check_function(student_fn, reference, cases, *, name: str = "your function",
     same results as a known wrong one on every case gets that message. ``options``
     go to ``check`` (e.g. ``index_style='cpp'``).
     """
+    name, reference, check = teacher.name(name), teacher.function(reference, "reference"), \
+        teacher.function(check, "check")
+    cases, mistakes = teacher.cases(cases), teacher.mistakes(mistakes)
+    for wrong_fn, _ in mistakes:
+        teacher.function(wrong_fn, "each known mistake of check_function")
+    if describe is not None:
+        teacher.function(describe, "describe")
     if is_unanswered(student_fn):
         return unanswered(name)
     if not callable(student_fn):

@@ -20,20 +20,12 @@ import math
 import numpy as np
 import sympy as sp
 
-from ..validation import DHLabError
+from . import check_options as teacher
 from .answers import Refused, close, is_unanswered, rounding_slack, to_vector, typed_decimals
 from .feedback import Feedback, correct, unanswered, wrong
 from .matrix_checks import check_matrix, num, rounding_note
 
 __all__ = ["check_value", "check_solutions"]
-
-
-def _as_units(unit, n):
-    if isinstance(unit, (list, tuple)):
-        if len(unit) != n:
-            raise DHLabError(f"unit must give one unit per component ({n}), got {unit!r}.")
-        return list(unit)
-    return [unit] * n
 
 
 def _with_unit(value, unit):
@@ -57,19 +49,19 @@ def check_value(student, expected, *, name: str = "your value", components=None,
     ✗ q2 is not right yet.
       • you gave 28.6479, which is the angle in degrees: the API takes radians. Write deg(28.6479) (or 28.6479·π/180).
     """
+    name, tol, mistakes = teacher.name(name), teacher.tolerance(tol), teacher.mistakes(mistakes)
+    exp_exprs = teacher.expected_vector(expected)
+    scalar = np.ndim(np.array(expected, dtype=object)) == 0 and not isinstance(expected, sp.MatrixBase)
+    n = len(exp_exprs)
+    components = teacher.names(components, n, "components") if components is not None else (
+        [name] if scalar else [f"component {k + 1}" for k in range(n)])
+    units = teacher.units(unit, n)
     if is_unanswered(student):
         return unanswered(name)
-    scalar = np.ndim(np.array(expected, dtype=object)) == 0 and not isinstance(expected, sp.MatrixBase)
-    exp_items = [expected] if scalar else list(np.ravel(np.array(expected, dtype=object)))
-    n = len(exp_items)
-    components = list(components) if components is not None else (
-        [name] if scalar else [f"component {k + 1}" for k in range(n)])
-    units = _as_units(unit, n)
     try:
         got = to_vector(student, name, n)
     except Refused as refusal:
         return wrong(name, [str(refusal)])
-    exp_exprs = [sp.sympify(e) for e in exp_items]
     if any(e.free_symbols for e in exp_exprs) or isinstance(got, list):
         feedback = check_matrix(sp.Matrix([got if isinstance(got, list) else list(got)]),
                                 sp.Matrix([exp_exprs]), name=name, tol=tol, mistakes=[
@@ -87,7 +79,7 @@ def check_value(student, expected, *, name: str = "your value", components=None,
         note = rounding_note(decimals)
         return correct(name, note) if decimals >= 2 else wrong(name, [note])
     for w, message in mistakes:
-        w = np.ravel(np.array(w, dtype=float))
+        w = np.array([float(v) for v in teacher.expected_vector(w, "a known mistake")])
         if w.shape == got.shape and close(got, w, tol, slack):
             return wrong(name, [message])
     return wrong(name, _vector_diagnosis(got, exp, components, units, tol, scalar, decimals))
@@ -156,12 +148,17 @@ def check_solutions(student, expected, *, name: str = "your solutions", componen
       • there are 2 solutions; you gave 1.
       • missing: 1 more solution: every branch of the inverse kinematics gives one.
     """
+    name, tol, mistakes = teacher.name(name), teacher.tolerance(tol), teacher.mistakes(mistakes)
+    expected = teacher.expected_solutions(expected)
+    n = len(expected[0]) if expected else 0
+    components = teacher.names(components, n, "components") if components is not None else \
+        [f"component {k + 1}" for k in range(n)]
+    units = teacher.units(unit, n)
     if is_unanswered(student):
         return unanswered(name)
-    expected = [np.ravel(np.array(e, dtype=float)) for e in expected]
-    n = len(expected[0]) if expected else 0
-    components = list(components) if components is not None else [f"component {k + 1}" for k in range(n)]
-    units = _as_units(unit, n)
+    if not expected:             # the point is out of reach: the right answer is the empty list
+        return correct(name) if isinstance(student, (list, tuple)) and not student else wrong(
+            name, [f"there is no solution (the target is out of reach): {name} must be the empty list []."])
     if isinstance(student, (str, dict, set)) or not hasattr(student, "__iter__") or (
             isinstance(student, np.ndarray) and student.ndim == 0):
         return wrong(name, [f"{name} must be a list of solutions, each ({', '.join(components)})."])
@@ -201,7 +198,9 @@ def check_solutions(student, expected, *, name: str = "your solutions", componen
         items.append(f"there {'is' if len(expected) == 1 else 'are'} {len(expected)} solution"
                      f"{'' if len(expected) == 1 else 's'}; you gave {len(sols)}.")
     for s in extra:
-        message = next((m for w, m in mistakes if same(s, np.ravel(np.array(w, dtype=float)))), None)
+        message = next((m for w, m in mistakes
+                        if same(s, np.array([float(v) for v in teacher.expected_vector(w, "a known mistake")]))),
+                       None)
         if message:
             items.append(message)
             continue

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import unicodedata
 
+from . import check_options as teacher
 from .answers import is_unanswered
 from .feedback import Feedback, correct, short_repr, unanswered, wrong
 
@@ -47,6 +48,8 @@ def check_choice(student, correct_answer, *, name: str = "your answer", accepted
     ✗ the colour of y is not right yet.
       • red is the x axis.
     """
+    name = teacher.name(name)
+    accepted, explanations = teacher.accepted_answers(accepted), teacher.explanations(explanations)
     if is_unanswered(student):
         return unanswered(name)
     textual = isinstance(correct_answer, str)
@@ -55,7 +58,7 @@ def check_choice(student, correct_answer, *, name: str = "your answer", accepted
     mine = _norm(student, textual)
     if mine in {_norm(correct_answer, textual), *(_norm(a, textual) for a in accepted)}:
         return correct(name)
-    for wrong_answer, why in (explanations or {}).items():
+    for wrong_answer, why in explanations.items():
         if mine == _norm(wrong_answer, textual):
             return wrong(name, [why])
     return wrong(name, [f"you answered {_short(student)}, which is not right."])
@@ -75,6 +78,7 @@ def check_terms(student: dict, expected: dict, *, name: str = "your glossary") -
     ✗ the glossary is not right yet.
       • eslabón: you wrote 'joint', which is the English for articulación.
     """
+    name, expected = teacher.name(name), teacher.glossary(expected)
     if not isinstance(student, dict):
         return unanswered(name) if is_unanswered(student) else wrong(
             name, [f"{name} must be a dict {{term: answer, …}}, as in the cell."])

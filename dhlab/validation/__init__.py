@@ -20,6 +20,8 @@ masked values are refused):
 
 Arrays and vectors:
 
+* ``as_sequence(x, name, expected, size=None)`` the items of an ordered container (a table's
+  rows, one value per joint): text, a dict, a set, a 0-d array are refused
 * ``as_float_array(x, name, finite=False)``  any shape of real numbers as a float array
 * ``as_vector(x, name, size)``               ``size`` finite numbers, shape (size,)
 * ``check_joint_values(q, links, name, single=False)``  joint values, (n,) or a batch
@@ -50,7 +52,7 @@ from __future__ import annotations
 
 from ..units import Angle, AngleArray, deg, has_angle_mark  # noqa: F401 (deg: for the doctest)
 from .arrays import (_check_finite, _numpy_floats, _objects_floats, _sequence_floats,  # noqa: F401
-                     as_float_array, as_matrix4, as_sym_matrix4, as_vector, rigid_problem)
+                     as_float_array, as_sequence, as_matrix4, as_sym_matrix4, as_vector, rigid_problem)
 from .joints import (_angle_columns, _check_angle_marks, _check_not_radians,  # noqa: F401
                      as_qlim, check_joint_values)
 from .values import (_PLAIN, FULL_TURN, LARGEST_LENGTH, DHLabError, _finite, _magnitude,  # noqa: F401
@@ -61,7 +63,7 @@ __all__ = [
     "DHLabError", "FULL_TURN", "LARGEST_LENGTH", "describe", "as_number", "as_angle", "as_length", "as_tolerance",
     "as_index", "as_float_array", "as_vector", "check_joint_values", "as_matrix4", "as_sym_matrix4",
     "rigid_problem", "as_qlim", "as_choice", "as_flag", "as_text", "as_timeout", "has_angle_mark",
-    "check_length_size",
+    "check_length_size", "as_sequence",
 ]
 
 _describe = describe   # the old private name

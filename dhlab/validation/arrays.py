@@ -18,7 +18,31 @@ import sympy as sp
 from ..units import Angle
 from .values import DHLabError, _real, describe
 
-__all__ = ["as_float_array", "as_vector", "as_matrix4", "as_sym_matrix4", "rigid_problem"]
+__all__ = ["as_sequence", "as_float_array", "as_vector", "as_matrix4", "as_sym_matrix4", "rigid_problem"]
+
+
+# ------------------------------------------------------------------------------------------
+# Sequences (rows of a table, one item per joint): ordered, so no sets; not text or a mapping
+# ------------------------------------------------------------------------------------------
+def as_sequence(x, name: str, expected: str, size: int | None = None) -> list:
+    """``x`` (a list, tuple, 1-d or deeper array, or a generator) as a list of its items, in order.
+
+    Text, bytes, a dict, a set (it has no order), a 0-d array and a number are refused with
+    ``expected`` (what to give, e.g. "one (low, high) per row"); ``size``, when given, is the
+    number of items needed.
+    """
+    ordered = not isinstance(x, (str, bytes, bytearray, dict, set, frozenset)) and hasattr(x, "__iter__")
+    try:
+        items = list(x) if ordered else None
+    except TypeError:              # iterable in name only, e.g. a 0-d numpy array
+        items = None
+    if items is None:
+        why = " (a set has no order)" if isinstance(x, (set, frozenset)) else ""
+        raise DHLabError(f"{name} must be {expected}{why}; got {describe(x)}.")
+    if size is not None and len(items) != size:
+        raise DHLabError(f"{name} must be {expected}: {size} item{'s' if size != 1 else ''}, got {len(items)}: "
+                         f"{describe(x)}.")
+    return items
 
 
 # ------------------------------------------------------------------------------------------

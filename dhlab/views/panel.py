@@ -190,6 +190,9 @@ class SliderEchoes:
         return "student"
 
 
+SIDE_WIDTH = "370px"          # the controls beside a figure: 330 px sliders and their readouts
+
+
 class Panel(widgets.HBox):
     """A figure on the left, controls on the right (or under it: ``below=True``);
     the base of the course's panels.
@@ -207,8 +210,12 @@ class Panel(widgets.HBox):
         self.error_box = widgets.HTML(layout=widgets.Layout(max_width="520px"))
         # beside the figure (wrapped under it in a narrow column), or always under it (``below``:
         # a wide figure, e.g. two subplots side by side)
+        # beside the figure the controls have a fixed width, so the row wraps (or not) by the
+        # column's width alone, never because a readout grew while a slider moves
         side = widgets.VBox([*controls, self.error_box],
-                            layout=widgets.Layout(margin="0.5em 0 0 0" if below else "0 0 0 1em"))
+                            layout=widgets.Layout(margin="0.5em 0 0 0" if below else "0 0 0 1em",
+                                                  width=None if below else SIDE_WIDTH,
+                                                  flex=None if below else "0 0 auto"))
         # the figure keeps its size: a flex row may otherwise shrink the canvas, which then shows
         # only part of the picture (its left side cut, as seen in a narrow browser column)
         live.widget.layout.flex = "0 0 auto"

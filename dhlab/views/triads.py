@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..validation import DHLabError, as_choice
+from ..validation import DHLabError, as_choice, as_length, as_matrix4
 
 __all__ = ["PALETTES", "AXIS_COLORS", "set_palette", "palette", "axis_colors", "triad_segments",
            "letter_points", "LETTERS", "LETTER_MARKERS", "draw_triad", "free_direction"]
@@ -89,9 +89,10 @@ def draw_triad(ax, T, length: float, label: str | None = None, letters: bool = T
     (so set the view and limits first);
     ``style`` goes to every line (e.g. ``alpha=0.5``, ``ls='--'``). Returns the artists.
     """
-    T = np.asarray(T, dtype=float)
-    if T.shape != (4, 4) or not np.isfinite(T).all():
-        raise DHLabError(f"draw_triad needs one 4x4 pose with finite entries, got shape {T.shape}.")
+    T = as_matrix4(T, "draw_triad's pose T")
+    length = as_length(length, "draw_triad's length")
+    if not length > 0:
+        raise DHLabError(f"draw_triad's length must be positive (the axes' length in data units), got {length:g}.")
     colors = axis_colors() if colors is None else colors
     three_d = getattr(ax, "name", "") == "3d"
     artists = []

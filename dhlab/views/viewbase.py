@@ -26,7 +26,7 @@ TRIAD_FRACTION = 0.13       # triad length as a fraction of the robot's typical 
 LINK_FRACTION = 0.25        # ... and at least this fraction of its typical link
 MAX_LIMIT = 1e6             # a joint limit beyond this cannot be drawn (1e308 is "no limit")
 STYLES = ("mechanism", "stick")
-LETTER_SIZE = 10            # points: the x, y, z at the tips of the triads
+LETTER_SIZE = 9             # points: the x, y, z at the tips of the triads
 
 
 def checked_robot(robot):
