@@ -31,12 +31,14 @@ from .symbolic import chain_product, compact, exact, exact_angle, exact_length, 
 from .transforms import Rx, Ry, Rz, trans
 from .units import Angle
 from .validation import (FULL_TURN, DHLabError, as_angle, as_choice, as_flag, as_index, as_length,
-                         as_matrix4, as_number, as_qlim, as_text, as_timeout, check_joint_values, describe,
-                         rigid_problem)
+                         as_matrix4, as_number, as_qlim, as_sequence, as_text, as_timeout, check_joint_values,
+                         describe, rigid_problem)
 
 __all__ = ["Factor", "Rot", "Move", "Link", "Robot"]
 
 AXES = {"x": 0, "y": 1, "z": 2}
+SYMPY_CONSTANTS = {"pi": "π", "E": "Euler's number e", "I": "the imaginary unit", "oo": "infinity",
+                   "zoo": "complex infinity", "nan": "not a number"}
 DEFAULT_PRISMATIC_RANGE = (0.0, 1.0)
 
 
@@ -147,11 +149,9 @@ class Link:
     joint_index: int = field(init=False)
 
     def __post_init__(self):
-        if isinstance(self.factors, (str, bytes, dict)) or not hasattr(self.factors, "__iter__"):
-            raise DHLabError(f"a Link takes a list of motions, e.g. Link([Rot('z', joint=True), "
-                             f"Move('x', 0.5)]); got {describe(self.factors)}.")
+        self.factors = as_sequence(self.factors, "a Link's motions", "a list of motions, e.g. "
+                                   "Link([Rot('z', joint=True), Move('x', 0.5)])")
         self.name = as_text(self.name, "link name")
-        self.factors = list(self.factors)
         moving = [i for i, f in enumerate(self.factors) if isinstance(f, Factor) and f.joint]
         if len(moving) != 1 or not all(isinstance(f, Factor) for f in self.factors):
             raise DHLabError(
@@ -426,6 +426,9 @@ def _joint_symbols(names, n: int) -> tuple:
         if not isinstance(s, str) or not s.isidentifier():
             raise DHLabError(f"joint_symbols[{k}] must be a name such as 'q{k + 1}' or 'theta{k + 1}', "
                              f"got {describe(s)}.")
+        if s in SYMPY_CONSTANTS:        # it would print, and be read back, as the constant
+            raise DHLabError(f"joint_symbols[{k}] = {s!r} is the name of a constant in the printed maths "
+                             f"({SYMPY_CONSTANTS[s]}); name the joint e.g. 'q{k + 1}' or 'theta{k + 1}'.")
         text.append(s)
     repeated = sorted({s for s in text if text.count(s) > 1})
     if repeated:

@@ -22,9 +22,14 @@ metres), with the joint variables q1…q6:
 Tz[q3, 0.15005]·Tx[-90°, 0.0203]
 >>> T3.matrix(0).round(5)[:3, 3].tolist()        # numeric at q3 = 0 (radians)
 [0.0203, 0.0, 0.15005]
->>> chain = T3 @ T3
+>>> T4 = Tz(q4, 0.4318) @ Tx(90, 0)
+>>> chain = T3 @ T4
 >>> len(chain)
 2
+>>> T3 @ T3
+Traceback (most recent call last):
+...
+dhlab.validation.DHLabError: q3 moves two links of this chain: each joint has its own variable (T1 uses q1, T2 uses q2, …); check which T_i you multiplied.
 >>> Tx(90, 0) @ Tz(q1, 0)
 Traceback (most recent call last):
 ...
@@ -56,6 +61,8 @@ class JointTerm:
     >>> q2 + 90, -q1, 90 - q2
     (q2 + 90, -q1, -q2 + 90)
     """
+
+    __array_ufunc__ = None      # numpy hands ``array - q1`` back to us, to be refused clearly
 
     def __init__(self, joint: int, sign: int = 1, const: float = 0.0):
         self.joint, self.sign = _inputs.joint_number(joint), _inputs.sign(sign)
@@ -117,6 +124,9 @@ class ZFactor:
             theta = JointTerm(*_inputs.term_parts(theta, "θ in Tz[θ, d]"))
         if _inputs.is_text(d):
             d = JointTerm(*_inputs.term_parts(d, "d in Tz[θ, d]"))
+        if isinstance(theta, JointTerm) and isinstance(d, JointTerm):
+            raise DHLabError(f"Tz[{theta!r}, {d!r}] has two joint variables: a link has one, in θ for a "
+                             "revolute joint or in d for a prismatic one; the other entry is a constant.")
         self.theta = theta if isinstance(theta, JointTerm) else _inputs.degrees(theta, "θ in Tz[θ, d]")
         self.d = d if isinstance(d, JointTerm) else _inputs.length(d, "d in Tz[θ, d]")
 
@@ -217,6 +227,11 @@ class DHChain:
         if not all(isinstance(t, DHTransform) for t in transforms):
             raise DHLabError("a chain is a list of transformations T_i = Tz(θ, d) @ Tx(α, a) "
                              "(write T1 @ T2 @ ...).")
+        used = [j for t in transforms for j in (_joint_of(t),) if j is not None]
+        twice = sorted({j for j in used if used.count(j) > 1})
+        if twice:
+            raise DHLabError(f"q{twice[0]} moves two links of this chain: each joint has its own variable "
+                             "(T1 uses q1, T2 uses q2, …); check which T_i you multiplied.")
         self.transforms = transforms
 
     def __matmul__(self, other):
@@ -245,6 +260,14 @@ class DHChain:
 
     def __repr__(self):
         return " · ".join(f"({t!r})" for t in self.transforms)
+
+
+def _joint_of(t: DHTransform):
+    """The joint number of the variable in ``t``'s Tz (None for a fixed transformation)."""
+    for part in (t.z.theta, t.z.d):
+        if isinstance(part, JointTerm):
+            return part.joint
+    return None
 
 
 def _frames_of(rows, q) -> np.ndarray:
