@@ -29,14 +29,17 @@ def pose_text(T, unit: str = "") -> str:
     """The end-effector position and roll-pitch-yaw (degrees) of pose ``T``, as HTML.
 
     >>> import numpy as np
+    Each line keeps to one line (``white-space: nowrap``): a longer number never re-wraps
+    the text, so the panel does not change height while a slider moves.
+
     >>> print(pose_text(np.eye(4), "m"))
-    <b>End effector</b> (<i>efector final</i>)<br>position [m]: x = 0.000, y = 0.000, z = 0.000<br>roll-pitch-yaw [°]: roll = 0.00, pitch = 0.00, yaw = 0.00
+    <div style="white-space:nowrap"><b>End effector</b> (<i>efector final</i>)<br>position [m]: x = 0.000, y = 0.000, z = 0.000<br>roll-pitch-yaw [°]: roll = 0.00, pitch = 0.00, yaw = 0.00</div>
     """
     x, y, z = np.round(np.asarray(T, dtype=float)[:3, 3], 3) + 0.0    # + 0.0: no "-0.000"
     roll, pitch, yaw = np.round(np.degrees(rpy(T)), 2) + 0.0
-    return (f"<b>End effector</b> (<i>efector final</i>)<br>"
+    return ('<div style="white-space:nowrap"><b>End effector</b> (<i>efector final</i>)<br>'
             f"position [{unit or 'length'}]: x = {x:.3f}, y = {y:.3f}, z = {z:.3f}<br>"
-            f"roll-pitch-yaw [°]: roll = {roll:.2f}, pitch = {pitch:.2f}, yaw = {yaw:.2f}")
+            f"roll-pitch-yaw [°]: roll = {roll:.2f}, pitch = {pitch:.2f}, yaw = {yaw:.2f}</div>")
 
 
 def matrix_html(T, title: str = "<sup>0</sup>T<sub>n</sub>") -> str:

@@ -153,3 +153,44 @@ def _has_module(name):
     import importlib.util
 
     return importlib.util.find_spec(name) is not None
+
+
+@pytest.mark.parametrize("backend", ["widget", "inline"])
+def test_teach_panel_keeps_its_size_in_a_narrow_column(browser, lab_server, lab_root, results_dir, backend):
+    """JupyterLab 1000 px wide with the file browser open (as a teacher opens the course): the
+    figure is shown whole (the canvas is never squeezed, which cut the 3D box at its left
+    edge) and the panel's size does not change while joint 2 sweeps its range."""
+    from labdriver import open_lab
+
+    folder = lab_root / "narrow"
+    folder.mkdir(exist_ok=True)
+    notebook_for(backend, folder)
+    path = folder / f"teach_narrow_{backend}.ipynb"
+    (folder / "teach_demo.ipynb").rename(path)
+    page = open_lab(browser, lab_server, width=1000, height=900)
+    try:
+        open_notebook(page, f"narrow/{path.name}")
+        run_all(page)
+        figure = page.locator(FIGURE[backend]).first
+        figure.wait_for(timeout=TIMEOUT_MS)
+        settled(figure)
+        panel = page.locator(".widget-hbox", has=page.locator(FIGURE[backend])).first
+        width = figure.evaluate("e => e.getBoundingClientRect().width")
+        natural = figure.evaluate("e => e.width || e.naturalWidth")     # canvas / img pixels
+        ratio = figure.evaluate("() => window.devicePixelRatio")
+        assert width == pytest.approx(natural / ratio, abs=2), f"the figure is squeezed: {width} px of {natural}"
+        sizes = set()
+        handle = page.locator(".widget-slider .noUi-handle").nth(1)
+        handle.focus()
+        for key in ["End"] + ["PageDown"] * 6 + ["Home"]:
+            page.keyboard.press(key)
+            time.sleep(0.4)
+            box = panel.bounding_box()
+            sizes.add((round(box["width"]), round(box["height"])))
+        page.screenshot(path=str(results_dir / f"teach_narrow-{backend}.png"))
+        assert len(sizes) == 1, f"the panel changed size while a slider moved: {sorted(sizes)}"
+    except Exception:
+        page.screenshot(path=str(results_dir / f"teach_narrow-{backend}-failure.png"))
+        raise
+    finally:
+        page.close()
