@@ -26,10 +26,6 @@ Tz[q3, 0.15005]·Tx[-90°, 0.0203]
 >>> chain = T3 @ T4
 >>> len(chain)
 2
->>> T3 @ T3
-Traceback (most recent call last):
-...
-dhlab.validation.DHLabError: q3 moves two links of this chain: each joint has its own variable (T1 uses q1, T2 uses q2, …); check which T_i you multiplied.
 >>> Tx(90, 0) @ Tz(q1, 0)
 Traceback (most recent call last):
 ...
@@ -227,11 +223,6 @@ class DHChain:
         if not all(isinstance(t, DHTransform) for t in transforms):
             raise DHLabError("a chain is a list of transformations T_i = Tz(θ, d) @ Tx(α, a) "
                              "(write T1 @ T2 @ ...).")
-        used = [j for t in transforms for j in (_joint_of(t),) if j is not None]
-        twice = sorted({j for j in used if used.count(j) > 1})
-        if twice:
-            raise DHLabError(f"q{twice[0]} moves two links of this chain: each joint has its own variable "
-                             "(T1 uses q1, T2 uses q2, …); check which T_i you multiplied.")
         self.transforms = transforms
 
     def __matmul__(self, other):
@@ -260,14 +251,6 @@ class DHChain:
 
     def __repr__(self):
         return " · ".join(f"({t!r})" for t in self.transforms)
-
-
-def _joint_of(t: DHTransform):
-    """The joint number of the variable in ``t``'s Tz (None for a fixed transformation)."""
-    for part in (t.z.theta, t.z.d):
-        if isinstance(part, JointTerm):
-            return part.joint
-    return None
 
 
 def _frames_of(rows, q) -> np.ndarray:

@@ -28,10 +28,10 @@ __all__ = ["teach", "TeachPanel", "pose_text", "matrix_html"]
 def pose_text(T, unit: str = "") -> str:
     """The end-effector position and roll-pitch-yaw (degrees) of pose ``T``, as HTML.
 
-    >>> import numpy as np
     Each line keeps to one line (``white-space: nowrap``): a longer number never re-wraps
     the text, so the panel does not change height while a slider moves.
 
+    >>> import numpy as np
     >>> print(pose_text(np.eye(4), "m"))
     <div style="white-space:nowrap"><b>End effector</b> (<i>efector final</i>)<br>position [m]: x = 0.000, y = 0.000, z = 0.000<br>roll-pitch-yaw [°]: roll = 0.00, pitch = 0.00, yaw = 0.00</div>
     """
