@@ -672,3 +672,61 @@ def test_the_source_notebooks_stored_feedback_is_what_the_checks_say_now():
             assert stored == A.check_part(part, ns).text()
     figures = [c for c in nb["cells"] if "_figure(" in "".join(c["source"])]
     assert len(figures) == 2 and all("image/png" in c["outputs"][0]["data"] for c in figures)
+
+
+# --- runs of three or more parallel axes (issue 22, item 4) -------------------------------------
+
+@pytest.mark.parametrize("key", ["ur5", "cobra600"])
+def test_a_slip_before_a_run_of_parallel_axes_costs_one_item(key):
+    """UR5 joints 2–4 and the Cobra's column are parallel: a wrong T_j (a_j and d_j swapped, a
+    length off) used to carry its wrong offset along the run, and the row where the run ends paid
+    too ("T4 … crosses it 0.51 m short … check d4"). Every single slip that changes how the chain
+    moves costs exactly one item of part 3 (ground truth: the robot's motion, not the grader)."""
+    from test_variants import _lost, _moves_like, _namespace_from_rows, _report, _rows_in_degrees
+    from dhlab.course.family_model import random_valid_frames
+    from dhlab.grading import variants as V
+    rng = np.random.default_rng(22)
+    counted = 0
+    for seed in range(3):
+        robot = V.robot_of_variant(V.variant(key, seed))
+        Q = np.vstack([np.zeros(robot.n)] + [[rng.uniform(max(lo, -3.0), min(hi, 3.0)) for lo, hi in robot.qlim]
+                                             for _ in range(6)])
+        for frames in [robot.home_frames, random_valid_frames(robot, rng, slide=0.3)]:
+            rows = _rows_in_degrees(robot, frames)
+            for i, (s, j, th, d, a, al) in enumerate(rows):
+                for what, row in {"a and d swapped": (s, j, th, a, d, al), "d + 10 cm": (s, j, th, d + 0.1, a, al),
+                                  "a + 10 cm": (s, j, th, d, a + 0.1, al)}.items():
+                    changed = rows[:i] + [row] + rows[i + 1:]
+                    if (what == "a and d swapped" and abs(a - d) < 2e-3) or _moves_like(robot, changed, Q):
+                        continue                  # no slip, or one below the grader's tolerance of 1 mm
+                    counted += 1
+                    lost = _lost(_report(_namespace_from_rows(robot, changed, frames), robot))
+                    assert len(lost) == 1 and lost[0][0] == "part3", (key, seed, f"T{i + 1}: {what}", lost)
+    assert counted > 40
+
+
+@pytest.mark.parametrize("key", ["puma560", "irb140", "lrmate200ic"])
+def test_a_dropped_theta_offset_on_parallel_axes_names_theta_not_a_tiny_distance(key):
+    """Joints 2 and 3 parallel, the −90° (or +90°) of θ2 forgotten: x2 is turned about z1. The
+    feedback used to say "x2 must cross z1 … 3.307e-18 m past that point … check d2" (the wrong
+    parameter, a meaningless distance, and a correct d2 to change when the origin was slid)."""
+    from test_variants import _lost, _namespace_from_rows, _report, _rows_in_degrees
+    from dhlab.course.family_model import random_valid_frames
+    from dhlab.grading import variants as V
+    rng = np.random.default_rng(9)
+    seen = 0
+    for seed in range(3):
+        robot = V.robot_of_variant(V.variant(key, seed))
+        for frames in [robot.home_frames] + [random_valid_frames(robot, rng, slide=0.3) for _ in range(3)]:
+            rows = _rows_in_degrees(robot, frames)
+            s, j, th, d, a, al = rows[1]
+            if abs(abs(th) - 90) > 1e-6:
+                continue
+            report = _report(_namespace_from_rows(robot, [rows[0], (s, j, 0.0, d, a, al)] + rows[2:], frames), robot)
+            seen += 1
+            assert [label for _, label in _lost(report)] == [report.part("part3").items[1].label]
+            message = report.part("part3").items[1].message
+            assert "θ2" in message and "check d2" not in message, message
+            for number in re.findall(r"(\d[\d.e+-]*) m\b", message):
+                assert float(number) >= puma.TOL_POS, message            # no distance below the tolerance
+    assert seen >= 3

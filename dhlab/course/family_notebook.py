@@ -111,11 +111,11 @@ def _intro(robot, record) -> str:
                        if k == "P") or "all revolute"
     mount = "hangs from a ceiling plate" if robot.mount["mount"] == "ceiling" else "stands on a floor plate"
     six = ("" if n == 6 else
-           f"\n\n**Your robot has {n} joints**: where the parts below are written for six, read {n} — "
-           f"`x_cases` has {n - 1} words, the transformations are T1…T{n}, frame {n} is the end effector's.")
+           f"\n\n**Your robot has {n} joints**: `x_cases` has {n - 1} words, the transformations are "
+           f"T1…T{n}, frame {n} is the end effector's.")
     who = html.escape(record["student_id"])
-    return (f"## Your robot\n\nThis notebook is for **{who}**. Your robot is a **{robot.name}**: "
-            f"a {s.name} whose lengths, home pose, positive senses and mounting were changed for you, so its DH "
+    return (f"## Your robot\n\nThis notebook is for **{who}**. Your robot is {_a(robot.name)} **{robot.name}**: "
+            f"{_a(s.name)} {s.name} whose lengths, home pose, positive senses and mounting were changed for you, so its DH "
             f"table is yours to work out — it is in no book. It has {n} joints ({joints}) and {mount}.\n\n"
             "The figure shows it in its **home pose** ($q_i = 0$ for every joint). Each joint axis is dashed; its "
             "black arrow is the axis's **positive direction**: a revolute joint turns by the right-hand rule about "
@@ -127,6 +127,45 @@ def _intro(robot, record) -> str:
             "* **The joint variables** $q_i$ are measured from the home pose, positive as the arrows show.\n"
             f"* **Frame {n}**, the end effector's, has its origin at the end point in the axes table, and "
             f"$z_{n}$ along joint {n}'s axis." + six)
+
+
+def _a(name: str) -> str:
+    """The article before a robot's name ('an Adept Cobra 600', 'a KUKA KR 5')."""
+    return "an" if name[:1].upper() in "AEIOU" else "a"
+
+
+_WORDS = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight"}
+
+
+def _own_robot_text(text: str, robot, name: str) -> str:
+    """The template's text about the PUMA 560 (six revolute joints, T1…T6, q1…q6), said of the
+    student's robot: its name, its number of joints, its transformations and variables. Each rule
+    changes only the words it finds (the template changes with the course)."""
+    n = robot.n
+    word = _WORDS.get(n, str(n))
+    kinds = ", ".join(f"{robot.kinds.count(k)} {w}" for k, w in (("R", "revolute"), ("P", "prismatic"))
+                      if robot.kinds.count(k))
+    rules = [
+        (r"a real six-joint arm", f"a real {word}-joint arm"),
+        (r"configuration of the PUMA\s+robot\*\*", f"configuration of a robot**, here your own {name}"),
+        (r"The PUMA 560 has \d+ revolute joints and \d+ links", f"Your {name} has {n} joints ({kinds}) and {n + 1} links"),
+        (r"(\$i = 1\s*…\s*)6(\$)", rf"\g<1>{n}\2"),
+        (r"(\$i = 1\s*…\s*)5(\$)", rf"\g<1>{n - 1}\2"),
+        (r"\bfive words\b", f"{_WORDS.get(n - 1, str(n - 1))} words"),
+        (r"\$z_6\$ along \$z_5\$, \$x_6\$", f"$z_{n}$ along $z_{{{n - 1}}}$, $x_{n}$"),
+        (r"T1 @ T2 @ T3 @ T4 @ T5 @ T6", " @ ".join(f"T{i}" for i in range(1, n + 1))),
+        (r"T1 … T6|T1…T6", f"T1…T{n}"),
+        (r"`T1` … `T6`", f"`T1` … `T{n}`"),
+        (r"^q1, q2, q3, q4, q5, q6 = joint_variables\(6\)",
+         ", ".join(f"q{i}" for i in range(1, n + 1)) + f" = joint_variables({n})"),
+        (r"\bthe PUMA's\b", "your robot's"),
+        (r"\bthe PUMA( 560)?\b", "your robot"),
+        (r"\bThe PUMA( 560)?\b", f"Your {name}"),
+        (r"\bPUMA 560\b", name),
+    ]
+    for pattern, replacement in rules:
+        text = re.sub(pattern, replacement, text, flags=re.M)
+    return text
 
 
 def _spec_name(record) -> str:
@@ -269,6 +308,10 @@ def release_notebook(template: dict, record: dict, figures: bool = True) -> tupl
             notes.append(f"the {gid!r} cell was left as in the template")
         else:
             _set_source(cells[i], new)
+    name = _spec_name(record)
+    for cell in cells:                            # the template's text, said of the student's robot
+        if cell.get("cell_type") == "markdown" or _grade_id(cell) == "setup":
+            _set_source(cell, _own_robot_text(_source(cell), robot, name))
     cells[where:where] = extra
     nb.setdefault("metadata", {})[V.METADATA_KEY] = record
     return nb, notes

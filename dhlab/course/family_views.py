@@ -103,10 +103,31 @@ def _arc(centre, w, radius, start):
     return centre + radius * (np.outer(np.cos(t), u) + np.outer(np.sin(t), v))
 
 
-def _draw_axis(ax, robot, i, size, near=None):
+def _centres(robot, joints, size, near=None) -> dict:
+    """Where each joint's axis is drawn: its point (nearest to ``near``), moved along its line,
+    past the earlier one, when two joints share a line (a SCARA's quill and its tool: J3 and J4),
+    so their arrows and labels do not lie on top of each other."""
+    out = {}
+    for i in joints:
+        axis = robot.axes[i]
+        c = axis.point if near is None else axis.nearest_point(near)
+        for j, cj in out.items():
+            w, wj = axis.direction, robot.axes[j].direction
+            if abs(float(w @ wj)) < 0.999 or np.linalg.norm(np.cross(c - cj, wj)) > 0.05 * size:
+                continue                                 # not the same line
+            # along this axis, in sizes: each drawing runs from 0.45 behind its centre to its label 1.07 ahead
+            u = float((cj - c) @ w) / size
+            lo, hi = (u - 0.45, u + 1.07) if float(w @ wj) > 0 else (u - 1.07, u + 0.45)
+            if lo < 1.07 and hi > -0.45:                 # the two drawings overlap: start past the other's
+                c = c + (hi + 0.55) * size * w
+        out[i] = c
+    return out
+
+
+def _draw_axis(ax, robot, i, size, near=None, centre=None):
     axis, kind = robot.axes[i], robot.kinds[i]
     w = axis.direction
-    c = axis.point if near is None else axis.nearest_point(near)
+    c = centre if centre is not None else axis.point if near is None else axis.nearest_point(near)
     a, b = c - 0.45 * size * w, c + 0.75 * size * w
     ax.plot(*np.array([a, b]).T, "--", color="0.1", lw=1.2)
     ax.quiver(*b, *(0.25 * size * w), color="0.1", arrow_length_ratio=0.45, lw=1.6)
@@ -145,8 +166,9 @@ def _draw(ax, robot, links, joints, size, span, labelled, near=None):
             if label not in labelled:
                 labelled.add(label)
                 ax.text(*(p + 0.012 * span), label, fontsize=8, color="0.15")
+    centres = _centres(robot, joints, size, near)
     for i in joints:
-        _draw_axis(ax, robot, i, size, near)
+        _draw_axis(ax, robot, i, size, near, centres[i])
 
 
 def _cube(ax, lo, hi, elev, azim):

@@ -4,7 +4,7 @@
 * :mod:`dhlab.grading.answers` — what a submission's answers are, as plain data;
 * :mod:`dhlab.grading.checks` — the fair checks and their feedback;
 * :mod:`dhlab.grading.part3` — each transformation judged against the frame the student meant
-  (one slip, one item);
+  (one slip, one item); :mod:`dhlab.grading.chain_motion` — the whole chain, moving;
 * :mod:`dhlab.grading.staging` — every submission copied, code only, before any runs;
 * :mod:`dhlab.grading.runner` / :mod:`dhlab.grading.sandbox` — running one notebook
   in a fresh kernel with time, memory, output and process limits, as an unprivileged
@@ -16,7 +16,13 @@
   signed with the teacher's secret (``dhlab-assign release``), and
   :mod:`dhlab.grading.grade_variants` — each submission graded against its student's own robot;
 * :mod:`dhlab.grading.generate` — the student notebook from the source notebook
-  (package data: ``dhlab/grading/data/08_puma_assignment.ipynb``).
+  (package data: ``dhlab/grading/data/08_puma_assignment.ipynb``);
+* :mod:`dhlab.grading.selfcheck` — one kernel started as the submissions' will be, before any runs;
+  :mod:`dhlab.grading.cleanup` — ``dhlab-grade --clean``, what a killed grader left;
+* where teachers already grade (``dhlab-grade export``, :mod:`dhlab.grading.export`):
+  :mod:`dhlab.grading.gradescope` (the autograder zip and its run; :mod:`dhlab.grading.wheel` makes
+  its wheel; :mod:`dhlab.grading.gradescope_local` runs it here as Gradescope does) and
+  :mod:`dhlab.grading.lms` (CSV files Canvas and Moodle import).
 
 The command line is :mod:`dhlab.grading.cli` (``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv
 [--secret-file KEY --release DIR]``); :mod:`dhlab.grading.launch` starts its runner processes.

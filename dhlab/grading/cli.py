@@ -2,6 +2,8 @@
 
     dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv [-j N] [--timeout S] [--resume]
                 [--secret-file KEY --release RELEASE_DIR [--fallback roster|none]]
+    dhlab-grade export gradescope|try-gradescope|canvas|moodle ...   (dhlab.grading.export)
+    dhlab-grade --clean                    (remove what a killed grader left: dhlab.grading.cleanup)
     python -m dhlab.grading.cli puma SUBMISSIONS_DIR ...          (the same)
 
 Every ``*.ipynb`` under SUBMISSIONS_DIR (any depth, e.g. nbgrader's
@@ -9,21 +11,26 @@ Every ``*.ipynb`` under SUBMISSIONS_DIR (any depth, e.g. nbgrader's
 
 1. **Every submission is copied first**, without its outputs (:mod:`dhlab.grading.staging`),
    into a folder only the grader can enter; nothing runs before all are copied.
-2. Each copy is run by its own runner process (:mod:`dhlab.grading.runner`) in a fresh
+2. **The grader checks itself** (:mod:`dhlab.grading.selfcheck`): one kernel is started exactly
+   as the submissions' will be and must import dhlab and answer; if it cannot, the grader
+   stops with one message (which user cannot enter which folder, what to do), exit code 5,
+   and grades nothing.
+3. Each copy is run by its own runner process (:mod:`dhlab.grading.runner`) in a fresh
    kernel with a time limit per cell (``--timeout``), a limit for the whole notebook, a
    memory limit and an output limit; ``-j N`` runs N at a time. As root, each kernel
    runs as an unprivileged user of its own, in its own folder
    (:mod:`dhlab.grading.isolation`), and every process of that user is killed afterwards.
-3. The runner only returns the student's answers as plain data; they are scored
+4. The runner only returns the student's answers as plain data; they are scored
    **here**, in the grader's process, by :mod:`dhlab.grading.checks`.
-4. Before and after each submission the whole installed ``dhlab`` is checked
+5. Before and after each submission the whole installed ``dhlab`` is checked
    unchanged; if it changed, the grader stops with a message (the rows it can
    trust are kept).
-5. The gradebook CSV is rewritten atomically after every submission (submission,
+6. The gradebook CSV is rewritten atomically after every submission (submission,
    score, max_score, status, one column per part, seconds, feedback file, the file
    and its SHA-256), so a grader killed mid-batch keeps every finished row, and
    ``--resume`` grades only what is missing (or changed). One feedback file per
-   submission goes to a folder beside it (``gradebook_feedback/``).
+   submission goes to a folder beside it (``gradebook_feedback/``). Exit codes: 0 done,
+   2 usage, 3 stopped (dhlab changed), 4 cannot isolate, 5 the self-check failed.
 
 A submission that raises, hangs, floods its output, runs out of memory, is not a
 notebook, or tampers with dhlab gets the marks its real answers earn and a reason in
@@ -104,6 +111,7 @@ def grade_submission(staged, options, iso=None, hide=()) -> dict:
     if info is not None:
         row.update(GV.columns(info))
     row["_feedback_text"] = feedback_text(staged.submission, run, report, status, GV.feedback_lines(info), cells)
+    row["_part_text"] = {part.key: part.text() for part in report.parts}     # Gradescope's tests (gradescope.py)
     return row
 
 
@@ -264,6 +272,7 @@ class _Batch:
         from .gradebook import write_atomic
         with self.lock:
             text = row.pop("_feedback_text")
+            row.pop("_part_text", None)
             if self.stop.is_set():
                 self.discarded.append(row["submission"])
                 return
@@ -295,6 +304,18 @@ def _grade_one(batch, staged, iso, hide):
 
 
 def main(argv=None) -> int:
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if argv[:1] == ["--clean"]:                   # what a killed grader left behind (cleanup.py)
+        from .cleanup import main as clean
+        return clean()
+    if argv[:1] == ["export"]:                    # Gradescope's autograder.zip, LMS gradebooks
+        from .export import main as export
+        return export(argv[1:])
+    return grade(argv)
+
+
+def grade(argv) -> int:
+    """``dhlab-grade puma SUBMISSIONS -o gradebook.csv …`` (see the module)."""
     parser = argparse.ArgumentParser(prog="dhlab-grade", description=__doc__.splitlines()[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("assignment", choices=ASSIGNMENTS, help="the assignment to grade (puma)")
@@ -353,7 +374,9 @@ def main(argv=None) -> int:
     from . import checks, grade_variants  # noqa: F401  (imported before any student code runs)
     from .gradebook import assignment_cells, grade_again, read_csv
     from .isolation import file_digests, setup
+    from . import cleanup, selfcheck
     from .staging import stage_all
+    held = cleanup.hold()                         # dhlab-grade --clean leaves this grader's folders alone  # noqa: F841
     checks.check_all(checks.Answers())            # build the reference before any student code runs
     assignment_cells()                            # and read the assignment's own cells
 
@@ -368,6 +391,11 @@ def main(argv=None) -> int:
             return 4
         if iso.why:
             print(f"Note: {iso.note()}", file=sys.stderr)
+        try:
+            selfcheck.check(iso, options, [folder.resolve()])   # one kernel, as the submissions' will run
+        except selfcheck.SelfCheckError as e:
+            print(f"dhlab-grade: {e}", file=sys.stderr)
+            return 5
         feedback_dir.mkdir(parents=True, exist_ok=True)
         old = read_csv(options.output, options.columns) if options.resume else []
         current = {(s.submission, s.sha256) for s in staged}

@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import csv
 import json
+import unicodedata
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
@@ -123,7 +124,7 @@ def _release_files(release: Path, records: dict) -> dict:
         with open(manifest, newline="", encoding="utf-8") as f:
             for row in csv.DictReader(f):
                 if row.get("student_id") in records and row.get("file"):
-                    files[PurePosixPath(row["file"]).stem] = row["student_id"]
+                    files[unicodedata.normalize("NFC", PurePosixPath(row["file"]).stem)] = row["student_id"]
     except (OSError, csv.Error, UnicodeDecodeError):
         pass                                            # the names derived from the ids are enough
     return files
@@ -150,10 +151,12 @@ def identify(vs: VariantSetup, rel_path) -> tuple:
     for candidate, how in ((stem, "the file name"), (folder, f"the folder submitted/{folder}/")):
         if candidate is None:
             continue
-        if candidate in vs.records:
-            return candidate, how
-        if candidate in vs.files:
-            return vs.files[candidate], how
+        # a Mac writes 'é' as 'e' + a combining accent (NFD) in file names: compare composed (NFC)
+        for name in dict.fromkeys((candidate, unicodedata.normalize("NFC", candidate))):
+            if name in vs.records:
+                return name, how
+            if name in vs.files:
+                return vs.files[name], how
     tried = f"the file name {stem!r}" + (f" and the folder {folder!r}" if folder else "")
     return None, f"{tried} match{'es' if not folder else ''} no student of the roster"
 

@@ -24,6 +24,9 @@ the submissions (:func:`setup`):
 compiled modules in ``__pycache__`` included; runners and kernels write none); the
 grader compares it before and after every submission and refuses to go on when it
 changed.
+
+The kernels' folders go where every user can enter (:func:`kernels_parent`): a ``TMPDIR``
+pointing to a private folder (``mktemp -d``) would otherwise kill every kernel at its start.
 """
 from __future__ import annotations
 
@@ -43,11 +46,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 __all__ = ["Isolation", "setup", "claim", "kill_user", "kill_token", "fingerprint", "file_digests", "changed_files",
-           "package_dir", "USER_PREFIX"]
+           "package_dir", "USER_PREFIX", "kernels_parent", "blocked_on_the_way", "KERNELS_DIR_ENV"]
 
 USER_PREFIX = "dhlab-grade-"
 MAX_USERS = 64                                  # dhlab-grade-1 … -64: room for many graders at once
 SANDBOX = Path(__file__).resolve().with_name("sandbox.py")
+KERNELS_DIR_ENV = "DHLAB_GRADE_KERNELS_DIR"     # where the kernels' own folders go (see kernels_parent)
 
 
 def package_dir() -> Path:
@@ -196,9 +200,57 @@ def _probe(user, base: Path) -> tuple:
     return "", "; ".join(proc.stdout.strip().splitlines())
 
 
+def blocked_on_the_way(path, uid: int, gids=()) -> str:
+    """The first folder on the way to ``path`` that user ``uid`` (groups ``gids``) cannot enter,
+    described ('/tmp/tmp.x1 (mode 0700, owner root)'), or '' when every folder lets it through."""
+    current = Path("/")
+    for part in [*Path(path).parts[1:], None]:
+        try:
+            info = current.stat()
+        except OSError:
+            return ""                            # not there (yet): nothing to say
+        bit = 0o100 if info.st_uid == uid else 0o010 if info.st_gid in gids else 0o001
+        if uid != 0 and not info.st_mode & bit:
+            try:
+                owner = pwd.getpwuid(info.st_uid).pw_name
+            except KeyError:
+                owner = str(info.st_uid)
+            return f"{current} (mode {stat.S_IMODE(info.st_mode):04o}, owner {owner})"
+        if part is None:
+            return ""
+        current = current / part
+
+
+def kernels_parent() -> Path:
+    """Where the kernels' own folders go: ``$DHLAB_GRADE_KERNELS_DIR`` when set, else the temporary
+    folder, unless another user cannot enter it (``TMPDIR`` set to a private ``mktemp -d`` folder):
+    then ``/tmp`` or ``/var/tmp`` (why: a kernel that cannot enter its own folder dies at its start)."""
+    chosen = os.environ.get(KERNELS_DIR_ENV)
+    if chosen:
+        return Path(chosen)
+    nobody = pwd.getpwnam("nobody").pw_uid if _has_user("nobody") else 65534
+    for folder in (tempfile.gettempdir(), "/tmp", "/var/tmp", "/dev/shm"):
+        if os.path.isdir(folder) and not blocked_on_the_way(folder, nobody):
+            return Path(folder)
+    return Path(tempfile.gettempdir())           # the self-check will say what is wrong
+
+
+def _kernels_dir():
+    """As root (kernels run as other users) or when told: :func:`kernels_parent`; else the temporary folder."""
+    return kernels_parent() if os.geteuid() == 0 or os.environ.get(KERNELS_DIR_ENV) else None
+
+
+def _has_user(name: str) -> bool:
+    try:
+        pwd.getpwnam(name)
+        return True
+    except KeyError:
+        return False
+
+
 def setup(jobs: int, mode: str = "auto") -> Isolation:
     """Decide how to isolate a batch of ``jobs`` parallel submissions (see the module doc)."""
-    base = Path(tempfile.mkdtemp(prefix="dhlab-grade-kernels-"))
+    base = Path(tempfile.mkdtemp(prefix="dhlab-grade-kernels-", dir=_kernels_dir()))
     os.chmod(base, 0o711)                      # users can enter their own folder, not list the others
     iso = Isolation("none", jobs=jobs, base=base)
     if mode == "none":

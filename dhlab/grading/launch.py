@@ -67,7 +67,7 @@ def run_submission(staged, options, iso=None, hide=(), retries: int = 2) -> dict
 def _run_once(copy: Path, options, skip, user=None, workdir=None, token="", hide=()) -> tuple:
     """(result dict, the cell that was running when the runner stopped or None)."""
     from .runner import RUNNER
-    with tempfile.TemporaryDirectory(prefix="dhlab-grade-") as tmp:
+    with tempfile.TemporaryDirectory(prefix="dhlab-grade-run-") as tmp:
         tmp = Path(tmp)
         result, pid_file, log = tmp / "result.json", tmp / "kernel.pid", tmp / "runner.log"
         progress = tmp / "progress"

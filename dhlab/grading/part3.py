@@ -18,6 +18,10 @@ teacher reads a page of working:
 * After a row that is wrong anyway (already charged), the next row may be placed on
   any valid frame i−1: the one the student meant cannot be known, and charging the
   same row twice would cost nothing more.
+* That freedom lasts along a run of parallel axes (UR5 joints 2–4, a SCARA's column):
+  frames that may slide along their axes stay free to slide together until a later row
+  pins them (:func:`_slides`), so a wrong offset in the charged row is not charged again
+  to the row where the run ends.
 
 Among all such readings, the one that charges the fewest rows wins; among those, the
 one whose charges change the fewest parameters (a wrong sign of α is one parameter; a
@@ -37,14 +41,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..course.family_model import dh_frames
 from . import puma
 from .answers import NOT_ANSWERED, Answers, Row
+from .chain_motion import chain_matches, random_configurations  # noqa: F401  (part of this module's API)
 
 __all__ = ["Analysis", "analyse", "rows_of", "matrix", "diagnose", "chain_matches", "random_configurations",
            "FLIPS"]
 
-N_CONFIGS = 50
 MAX_STATES = 24
 FAIL_EDITS = 3            # a row wrong in itself counts as a bigger edit than any flip of its frame
 
@@ -142,6 +145,7 @@ class _State:
     frames: list
     own: list                   # whether frame k is the one the student's T_k built
     edits: int = 0              # how many parameters the charges change (a smaller fix is likelier)
+    slack: int | None = None    # a charged row whose frame (and the frames after it) may still slide
 
     def key(self):
         return tuple(np.round(self.V, 4).ravel()), self.charged[-1:] == (len(self.items),)
@@ -208,7 +212,7 @@ def analyse(answers: Answers, ref=None) -> Analysis:
             item = Item(f"T{i}", None if row is NOT_ANSWERED else False,
                         "not answered" if row is NOT_ANSWERED else row.why)
             states = _dedupe([_State(ref.home_frames[i], s.cost + 1, s.charged + (i,), s.items + [item],
-                                     s.frames + [ref.home_frames[i]], s.own + [False], s.edits) for s in states])
+                                     s.frames + [ref.home_frames[i]], s.own + [False], s.edits, slack=i) for s in states])
             continue
         structural_ok = structural_ok and not _structure(ref, i, row)
         A = matrix(row)
@@ -239,6 +243,8 @@ def _expand(ref, i: int, rows, A, s: _State) -> list:
                         W = G @ inverse
                         if puma.is_valid_frame(ref, i - 1, W):
                             candidates.append(("any", W, 0))
+        if s.slack is not None and s.slack < i - 1 and not _place(ref, i, s.V, row, A)[0]:
+            candidates += _slides(ref, i, s, A)
         for how, V, extra in candidates:
             ok, F, _ = _place(ref, i, V, row, A)
             if not ok:
@@ -251,8 +257,12 @@ def _expand(ref, i: int, rows, A, s: _State) -> list:
                 edits += len(_flip_fixes(i - 1, rows[i - 2], how))
             frames = s.frames[:-1] + [V]                # the frame i-1 the student meant
             own = s.own[:-1] + [s.own[-1] and not how]
+            if how == "slide":                          # the frames since the charged row, moved with it
+                move = V @ np.linalg.inv(s.V)
+                frames = [move @ f if k >= s.slack else f for k, f in enumerate(s.frames)]
+                own = [o and k < s.slack for k, o in enumerate(s.own)]
             out.append(_State(F, s.cost + extra, charged, items + [Item(label, True)], frames + [F], own + [True],
-                              edits))
+                              edits, s.slack))
     if passed_free:                     # a row that fits is never charged for itself
         return out
     # T_i wrong: diagnosed on the frame as it is; carry on from the nearest valid frame i
@@ -262,7 +272,22 @@ def _expand(ref, i: int, rows, A, s: _State) -> list:
     C, _, _ = puma.nearest_valid_frame(ref, i, F)
     edits = FAIL_EDITS if broken or not _one_edit_fits(ref, i, s.V, row) else 1
     out.append(_State(C, s.cost + 1, s.charged + (i,), s.items + [Item(label, False, "; ".join(problems))],
-                      s.frames + [C], s.own + [False], s.edits + edits))
+                      s.frames + [C], s.own + [False], s.edits + edits, slack=i))
+    return out
+
+
+def _slides(ref, i: int, s: _State, A) -> list:
+    """Frame i−1 moved, with every frame since the charged row ``s.slack``, by the translation that
+    brings T_i to a valid frame i, when each moved frame stays valid (the frames of a run of
+    parallel axes slide along them): [("slide", the moved frame i−1, 0)]."""
+    F = s.V @ A
+    out = []
+    for G, _, _ in puma.valid_frames_near(ref, i, F)[:4]:
+        move = np.eye(4)
+        move[:3, 3] = G[:3, 3] - F[:3, 3]
+        if np.linalg.norm(move[:3, 3]) > 1e-9 and all(puma.is_valid_frame(ref, k, move @ s.frames[k])
+                                                        for k in range(s.slack, i)):
+            out.append(("slide", move @ s.V, 0))
     return out
 
 
@@ -363,6 +388,11 @@ def diagnose(ref, i: int, V, F, row: Row) -> str:
         should = (f"should meet z{i - 1} (a{i} = 0)" if rel.kind == "intersect" else
                   f"should be {rel.distance:.4g} m from z{i - 1} (the length of their common normal, |a{i}|)")
         return f"{joint}: z{i} {should}; your a{i} = {_g(row.a)}"
+    turned = math.degrees(math.acos(min(1.0, abs(float(F[:3, 0] @ rel.normal)))))     # x_i's line and the normal's
+    if rel.kind in ("parallel", "skew") and turned > puma.TOL_DEG:
+        return (f"{joint}: x{i} must lie along the common normal of z{i - 1} and z{i} (at home, along "
+                f"±{_vec(rel.normal, 3)}); yours is turned {turned:.0f}° from it about z{i - 1}: check the "
+                f"constant in θ{i} (yours: {_g(row.theta.const)}°)")
     if rel.kind in ("parallel", "skew") and float(row.a * F[:3, 0] @ rel.normal) < 0:
         return (f"{joint}: z{i} is {rel.distance:.4g} m from z{i - 1} as it should be, but on the wrong side "
                 f"at the home pose: x{i} points from z{i - 1} towards z{i}; check the constant in θ{i} "
@@ -371,6 +401,9 @@ def diagnose(ref, i: int, V, F, row: Row) -> str:
     crossing = o - row.a * F[:3, 0]
     target = rel.foot - (rel.distance * rel.normal if rel.kind == "skew" else 0.0)
     shift = float((target - crossing) @ z_prev)
+    if abs(shift) <= puma.TOL_POS:                # no distance to quote: the frame is off in another way
+        return (f"frame {i} is not a valid DH frame for {joint}: check the constant in θ{i} "
+                f"(yours: {_g(row.theta.const)}°) and α{i} (yours: {_g(row.alpha)}°)")
     free = ""
     if puma.frame_family(ref, i - 1).shift:
         free = (f" — or d{i - 1}: the origin of frame {i - 1} may slide along z{i - 1} (its axes are parallel), "
@@ -390,60 +423,3 @@ def _sliding_problem(ref, i: int, F, row: Row) -> str:
                 f"the constant in θ{i} (yours: {_g(row.theta.const)}°)")
     return (f"frame {i} is not a valid DH frame: x{i} must be square to z{i - 1} and z{i} (the directions of the "
             f"axes of joints {i} and {i + 1}) and z{i} along the axis of {joint}; check θ{i} and α{i}")
-
-
-# --- the whole chain, moving -------------------------------------------------------------------
-
-def random_configurations(n: int = N_CONFIGS, seed: int = 560, ref=None) -> np.ndarray:
-    """The configurations the chain is compared at: home, then n random ones (radians for a
-    revolute joint, anywhere in ±180°; metres for a prismatic one, within its stroke)."""
-    ref = ref or puma.reference()
-    rng = np.random.default_rng(seed)
-    Q = rng.uniform(-math.pi, math.pi, (n, ref.n))
-    for j, kind in enumerate(ref.kinds):
-        if kind == "P":
-            Q[:, j] = rng.uniform(*ref.qlim[j], n)
-    return np.vstack([np.zeros(ref.n), Q])
-
-
-def _student_rows_numeric(rows) -> tuple:
-    """The student's rows as ``(sign, joint index, θ0, d0, a, α)`` (radians, metres) and their
-    kinds ('R' where q is in θ, 'P' where it is in d), for :func:`family_model.dh_frames`."""
-    out, kinds = [], ""
-    for row in rows:
-        joint, sign, where = row.joint
-        out.append((sign, joint - 1, math.radians(row.theta.const), row.d.const, row.a, math.radians(row.alpha)))
-        kinds += "P" if where == "d" else "R"
-    return out, kinds
-
-
-def chain_matches(rows, Q=None, ref=None) -> dict:
-    """Compare a chain with the reference robot at configurations ``Q`` (default: home + 50 random).
-
-    For each joint, whether its axis — a directed line: the axis of joint i is z_{i-1},
-    pointing the way that a positive q_i turns by the right-hand rule (or slides) — is the
-    robot's at every configuration (a sliding joint's axis: its direction only, the line
-    is the student's choice); whether the end effector is at the same place; and whether
-    the last frame's z lies along the last joint's axis.
-    """
-    ref = ref or puma.reference()
-    Q = random_configurations(ref=ref) if Q is None else np.atleast_2d(Q)
-    numeric, kinds = _student_rows_numeric(rows)
-    F = dh_frames(numeric, kinds, Q)
-    R = ref.frames(Q)
-    points, directions = ref.axes_at(Q)
-    cos_tol = math.cos(math.radians(puma.TOL_DEG))
-    axes_ok = []
-    for k, row in enumerate(rows):
-        d_st = row.joint[1] * F[:, k, :3, 2]
-        p_st = F[:, k, :3, 3]
-        d_ref, p_ref = directions[:, k], points[:, k]
-        same_dir = np.einsum("ij,ij->i", d_st, d_ref) >= cos_tol
-        v = p_ref - p_st
-        off = np.linalg.norm(v - np.einsum("ij,ij->i", v, d_st)[:, None] * d_st, axis=1)
-        on_line = off <= puma.TOL_POS if ref.kinds[k] == "R" else True
-        axes_ok.append(bool(np.all(same_dir & on_line)))
-    ee = np.linalg.norm(F[:, -1, :3, 3] - R[:, -1, :3, 3], axis=1)
-    last_z = np.abs(np.einsum("ij,ij->i", F[:, -1, :3, 2], R[:, -1, :3, 2])) >= cos_tol
-    return {"axes": axes_ok, "end_effector": bool(np.all(ee <= puma.TOL_POS)), "last_z": bool(np.all(last_z)),
-            "configurations": len(Q), "frames": F}

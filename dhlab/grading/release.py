@@ -99,18 +99,45 @@ def _id_column(header, id_column, path) -> int:
                      f"{', '.join(ID_COLUMNS)}, or pass --id-column.")
 
 
+# letters NFKD does not take apart, and the Cyrillic and Greek alphabets, spelled in ASCII
+_SPELLED = {"Ø": "O", "ø": "o", "ß": "ss", "Ł": "L", "ł": "l", "Æ": "AE", "æ": "ae", "Œ": "OE", "œ": "oe",
+            "Đ": "D", "đ": "d", "Ð": "D", "ð": "d", "Þ": "Th", "þ": "th", "ı": "i"}
+_CYRILLIC = ("а a б b в v г g д d е e ё e ж zh з z и i й y к k л l м m н n о o п p р r с s т t у u ф f х kh "
+             "ц ts ч ch ш sh щ shch ъ _ ы y ь _ э e ю yu я ya і i ї yi є ye ґ g")
+_GREEK = "α a β v γ g δ d ε e ζ z η i θ th ι i κ k λ l μ m ν n ξ x ο o π p ρ r σ s ς s τ t υ y φ f χ ch ψ ps ω o"
+for _pairs in (_CYRILLIC, _GREEK):
+    _words = _pairs.split()
+    for _letter, _ascii in zip(_words[::2], _words[1::2]):
+        _SPELLED[_letter] = "" if _ascii == "_" else _ascii
+        _SPELLED[_letter.upper()] = "" if _ascii == "_" else _ascii.capitalize()
+_SPELL = str.maketrans(_SPELLED)
+
+
+def _readable(ch: str) -> str:
+    """One character of an id in ASCII, for a file name: letters with accents without them (é → e,
+    ñ → n), ß → ss, ł → l, Cyrillic and Greek letters spelled out (Иван → Ivan); anything else '_'."""
+    folded = ch.translate(_SPELL)                        # й → y, before NFKD would make it и + ˘
+    if folded == ch:
+        folded = unicodedata.normalize("NFKD", ch).translate(_SPELL)     # é → e + ´, έ → ε + ´ → e + ´
+    kept = "".join(c for c in folded if c.isascii() and (c.isalnum() or c in "._-"))
+    return kept if kept or unicodedata.combining(ch) else "_"
+
+
 def safe_filename(student_id: str) -> str:
     """A file name (without extension) for ``student_id``: the id itself when it is plain
-    (letters, digits, '.', '_', '-'), else its letters folded to ASCII, other characters as
-    '_', and a short hash of the id, so two different ids never share a file.
+    (letters, digits, '.', '_', '-'), else the id spelled in ASCII (:func:`_readable`: accents
+    dropped, Cyrillic and Greek spelled out, other characters '_'; an id with nothing left,
+    e.g. Chinese, is 'student') and a short hash of the id, so two different ids never share a file.
 
     >>> safe_filename("ana.garcia"), safe_filename("Ana María"), safe_filename("Ana_María")
     ('ana.garcia', 'Ana_Maria-8358ed', 'Ana_Maria-0fd2b0')
+    >>> safe_filename("Łukasz.Øster"), safe_filename("Иван.Петров"), safe_filename("李雷")
+    ('Lukasz.Oster-dead72', 'Ivan.Petrov-519ffb', 'student-3a4732')
     """
     if re.fullmatch(r"[A-Za-z0-9_-][A-Za-z0-9._-]{0,79}", student_id) and student_id.upper() not in _RESERVED:
         return student_id
-    folded = unicodedata.normalize("NFKD", student_id).encode("ascii", "ignore").decode("ascii")
-    slug = re.sub(r"[^A-Za-z0-9._-]+", "_", folded).strip("._")[:60] or "student"
+    spelled = "".join(_readable(ch) for ch in unicodedata.normalize("NFC", student_id))
+    slug = re.sub(r"_+", "_", spelled).strip("._")[:60] or "student"
     return f"{slug}-{hashlib.sha256(student_id.encode('utf-8')).hexdigest()[:6]}"
 
 

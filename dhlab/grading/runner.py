@@ -228,7 +228,9 @@ class _Kernel:
                  "--DisplayFormatter.active_types=text/html"]
         (spec_dir / "kernel.json").write_text(json.dumps(
             {"argv": argv, "display_name": "dhlab sandbox", "language": "python"}), encoding="utf-8")
-        self.km = KernelManager(kernel_name="dhlab-sandbox",
+        # Unix sockets in the kernel's own folder, not TCP ports: the kernel may have no network at all
+        # (its own network namespace, sandbox.py), and no two kernels can ever pick the same port
+        self.km = KernelManager(kernel_name="dhlab-sandbox", transport="ipc", ip=str(workdir / "kernel"),
                                 kernel_spec_manager=KernelSpecManager(kernel_dirs=[str(spec_dir.parent)]))
         self.km.connection_file = str(private / f"connection-{secrets.token_hex(8)}.json")
         env = {k: v for k, v in os.environ.items()

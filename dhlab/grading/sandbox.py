@@ -20,7 +20,8 @@ Soft and hard limits are set equal, so an ordinary user's code cannot raise them
 again.
 
 **Isolation** (``--uid``/``--gid``, when the grader runs as root): before the kernel
-starts, this process enters a private mount namespace, empties the folders it is told
+starts, this process enters a private network namespace (no network: the kernel talks to
+its runner over Unix sockets in its own folder) and a private mount namespace, empties the folders it is told
 to hide (``--hide``: the submissions), makes the Python installation and dhlab
 reachable even when they sit under a folder other users cannot enter (``/root``),
 mounts a ``/proc`` that shows only the kernel user's own processes, caps that user's
@@ -53,6 +54,7 @@ OUTPUT_LIMIT_NOTE = "[dhlab grader: output limit reached; the rest of this cell'
 MAX_PROCESSES = 128       # per kernel user (RLIMIT_NPROC): no fork bomb
 
 CLONE_NEWNS = 0x00020000
+CLONE_NEWNET = 0x40000000
 MS_RDONLY, MS_NOSUID, MS_NODEV, MS_NOEXEC = 1, 2, 4, 8
 MS_BIND, MS_REC, MS_PRIVATE = 4096, 16384, 1 << 18
 MNT_DETACH = 2
@@ -197,6 +199,9 @@ def enter_sandbox(uid: int, gid: int, hide=()) -> list:
             missing.append("/proc shows other users' processes (hidepid not available)")
     except OSError as e:
         missing.append(f"no private mount namespace ({e.strerror or e}): the submissions folder is not hidden")
+    if libc.unshare(CLONE_NEWNET) != 0:           # no network: only a loopback that is down
+        missing.append(f"the kernels have network access (no network namespace: "
+                       f"{os.strerror(ctypes.get_errno())})")
     resource.setrlimit(resource.RLIMIT_NPROC, (MAX_PROCESSES, MAX_PROCESSES))
     os.setgroups([])
     os.setgid(gid)

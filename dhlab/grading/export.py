@@ -1,0 +1,120 @@
+"""``dhlab-grade export …``: the grading where the teacher's university already grades.
+
+    dhlab-grade export gradescope -o autograder.zip [--secret-file KEY --release DIR] [--timeout S ...]
+    dhlab-grade export try-gradescope autograder.zip NOTEBOOK [--email E] [--sid S]
+    dhlab-grade export canvas GRADEBOOK.csv --roster ROSTER.csv -o canvas.csv [--assignment TITLE]
+    dhlab-grade export moodle GRADEBOOK.csv --roster ROSTER.csv -o moodle.csv [--id-column COLUMN]
+
+The zip: :mod:`dhlab.grading.gradescope`; trying it here: :mod:`dhlab.grading.gradescope_local`;
+the LMS files: :mod:`dhlab.grading.lms`.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import tempfile
+from pathlib import Path
+
+from ..validation import DHLabError
+
+__all__ = ["main"]
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="dhlab-grade export", description=__doc__.splitlines()[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="target", required=True)
+    gs = sub.add_parser("gradescope", help="Gradescope's autograder.zip (otter-grader runs it too)")
+    gs.add_argument("-o", "--output", type=Path, default=Path("autograder.zip"))
+    gs.add_argument("--secret-file", type=Path, default=None, help="personal variants: the teacher's secret")
+    gs.add_argument("--release", type=Path, default=None, help="personal variants: the folder dhlab-assign wrote")
+    gs.add_argument("--fallback", choices=("roster", "none"), default=None)
+    gs.add_argument("--timeout", type=float, default=30, help="seconds per cell (default 30)")
+    gs.add_argument("--total-timeout", type=float, default=None, help="seconds per notebook (default 4 × --timeout)")
+    gs.add_argument("--memory-mb", type=float, default=2048)
+    gs.add_argument("--isolation", choices=("auto", "user", "none"), default="auto")
+    tr = sub.add_parser("try-gradescope", help="run an autograder.zip here, as Gradescope would")
+    tr.add_argument("zip", type=Path)
+    tr.add_argument("notebook", type=Path)
+    tr.add_argument("--email", default="student@example.edu", help="the submitter's email in the metadata")
+    tr.add_argument("--sid", default="", help="the submitter's SID in the metadata")
+    for name in ("canvas", "moodle"):
+        lms = sub.add_parser(name, help=f"a CSV file {name.capitalize()} imports")
+        lms.add_argument("gradebook", type=Path, help="the gradebook dhlab-grade wrote")
+        lms.add_argument("--roster", type=Path, required=True, help="the class list (CSV with a header)")
+        lms.add_argument("-o", "--output", type=Path, required=True)
+        lms.add_argument("--id-column", default=None, help="the roster's id column (default: id, student_id, …)")
+        lms.add_argument("--release", type=Path, default=None,
+                         help="the release folder: its file names count as their students' ids")
+        if name == "canvas":
+            lms.add_argument("--assignment", default="PUMA assignment", help="the assignment's column title in Canvas")
+        else:
+            lms.add_argument("--feedback-dir", type=Path, default=None,
+                             help="the feedback files (default: beside the gradebook, <name>_feedback)")
+    return parser
+
+
+def _lms(args) -> int:
+    from . import lms
+    from .gradebook import read_csv
+    import csv
+    with open(args.gradebook, newline="", encoding="utf-8") as f:
+        columns = csv.DictReader(f).fieldnames or []
+    rows = read_csv(args.gradebook, columns)
+    if "score" not in columns or not rows:
+        raise DHLabError(f"{args.gradebook} is not a gradebook dhlab-grade wrote (no rows with a score column).")
+    id_column, roster = lms.read_roster_rows(args.roster, args.id_column)
+    files = {}
+    if args.release is not None:
+        from .grade_variants import _release_files
+        files = _release_files(args.release, roster)
+    by_id, unmatched, missing = lms.match(rows, roster, files)
+    if args.target == "canvas":
+        table = lms.canvas_rows(by_id, roster, id_column, args.assignment, rows[0]["max_score"])
+    else:
+        feedback = args.feedback_dir or args.gradebook.with_name(args.gradebook.stem + "_feedback")
+        table = lms.moodle_rows(by_id, id_column, feedback)
+    lms.write(args.output, table)
+    print(f"dhlab-grade export {args.target}: {len(by_id)} grades in {args.output}.", file=sys.stderr)
+    if unmatched:
+        print(f"Not exported, no student of the roster ({len(unmatched)}): {', '.join(unmatched[:10])}",
+              file=sys.stderr)
+    if missing:
+        print(f"No graded submission ({len(missing)}, left as they are in the LMS): {', '.join(missing[:10])}",
+              file=sys.stderr)
+    return 0
+
+
+def _try(args) -> int:
+    from .gradescope_local import Harness, metadata, problems
+    with tempfile.TemporaryDirectory(prefix="dhlab-try-gradescope-") as tmp:
+        harness = Harness(args.zip, tmp)
+        outcome = harness.run([args.notebook], metadata(args.email, sid=args.sid))
+    print(outcome.log, file=sys.stderr)
+    if outcome.results is None:
+        print("No results.json: Gradescope shows an autograder failure (the log above says why).", file=sys.stderr)
+        return 1
+    print(json.dumps(outcome.results, indent=1, ensure_ascii=False))
+    wrong = problems(outcome.results)
+    for p in wrong:
+        print(f"results.json does not follow Gradescope's schema: {p}", file=sys.stderr)
+    return 1 if wrong else 0
+
+
+def main(argv=None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        if args.target == "gradescope":
+            from .gradescope import export
+            out = export(args.output, args.secret_file, args.release, args.fallback, args.timeout,
+                         args.total_timeout, args.memory_mb, isolation=args.isolation)
+            print(f"dhlab-grade export: {out} (upload it to Gradescope as the autograder; never to students)",
+                  file=sys.stderr)
+            return 0
+        if args.target == "try-gradescope":
+            return _try(args)
+        return _lms(args)
+    except DHLabError as exc:
+        print(f"dhlab-grade export: error: {exc}", file=sys.stderr)
+        return 2

@@ -1,0 +1,144 @@
+"""The gradebook as a CSV file that Canvas or Moodle imports.
+
+    dhlab-grade export canvas gradebook.csv --roster ROSTER.csv -o canvas.csv [--assignment "PUMA assignment"]
+    dhlab-grade export moodle gradebook.csv --roster ROSTER.csv -o moodle.csv [--id-column email]
+
+Each gradebook row is matched to a student of the roster: the roster's id column (as for
+``dhlab-assign release``: ``id``, ``student_id``, ``student``, ``username``, ``login``, or
+``--id-column``) must equal the student the submission is from — its file's name
+(``ana.ipynb``), the folder after nbgrader's ``submitted/``, or the release's file name of that
+id (``--release``). Which gradebook rows matched no student, and which students have no
+graded row, is reported; they are left out of the file (an LMS import then leaves those grades
+as they were). A row the grader failed on (no score) is never exported as 0.
+
+* **Canvas** (Grades → Import): ``Student, ID, SIS User ID, SIS Login ID, Section, <assignment>``,
+  then a ``Points Possible`` row. Canvas matches a student by ``ID``, then ``SIS User ID`` or
+  ``SIS Login ID``, then name; export Canvas's own gradebook (Grades → Export) and pass it as
+  the roster with ``--id-column "SIS Login ID"`` (or ``ID``), and every column Canvas needs is
+  copied from it. With another roster, ``Student`` is its ``name`` column when it has one and
+  ``SIS Login ID`` is the id.
+* **Moodle** (Grades → Import → CSV file): the roster's id column (map it to ``useridnumber``,
+  ``username`` or ``useremail``, as it is), ``grade`` (map to the assignment) and ``feedback``
+  (map to its feedback: the text of the submission's feedback file).
+"""
+from __future__ import annotations
+
+import csv
+import io
+from pathlib import Path, PurePosixPath
+
+from ..validation import DHLabError
+
+__all__ = ["read_roster_rows", "match", "canvas_rows", "moodle_rows", "write", "CANVAS_COLUMNS"]
+
+CANVAS_COLUMNS = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"]
+POINTS_POSSIBLE = "    Points Possible"      # Canvas's own export writes it so
+
+
+def read_roster_rows(path, id_column=None) -> tuple:
+    """(the id column's name, {id: the roster row as a dict}), with clear errors (no such file, no
+    id column, an empty or repeated id). Canvas's ``Points Possible`` row is not a student."""
+    from .release import _id_column
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except OSError as exc:
+        raise DHLabError(f"cannot read the roster {str(path)!r}: {exc.strerror}.") from None
+    except UnicodeDecodeError:
+        raise DHLabError(f"the roster {str(path)!r} is not UTF-8 text: save it as 'CSV UTF-8'.") from None
+    try:
+        dialect = csv.Sniffer().sniff(text[:4096], delimiters=",;\t")
+    except csv.Error:
+        dialect = csv.excel
+    rows = [r for r in csv.reader(io.StringIO(text), dialect) if any(c.strip() for c in r)]
+    if len(rows) < 2:
+        raise DHLabError(f"the roster {str(path)!r} needs a header row and one row per student.")
+    header = [h.strip() for h in rows[0]]
+    column = header[_id_column(header, id_column, path)]
+    out = {}
+    for line, row in enumerate(rows[1:], start=2):
+        record = {h: (row[k].strip() if k < len(row) else "") for k, h in enumerate(header)}
+        if row and row[0].strip() == POINTS_POSSIBLE.strip():
+            continue
+        sid = record[column]
+        if not sid:
+            raise DHLabError(f"roster {path.name}, row {line}: the id column {column!r} is empty.")
+        if sid in out:
+            raise DHLabError(f"roster {path.name}: the id {sid!r} appears twice; every student needs a different id.")
+        out[sid] = record
+    return column, out
+
+
+def _student_of(row: dict, ids, files: dict) -> str | None:
+    """The roster id a gradebook row is from: its variant columns' identification aside, the
+    file's stem, then the folder after ``submitted/`` (a release file name counts as its id)."""
+    parts = PurePosixPath(row.get("file") or row["submission"] + ".ipynb").parts
+    candidates = [PurePosixPath(parts[-1]).stem]
+    candidates += [parts[i + 1] for i, p in enumerate(parts[:-2]) if p == "submitted"]
+    for c in candidates:
+        if c in ids:
+            return c
+        if c in files:
+            return files[c]
+    return None
+
+
+def match(gradebook_rows, roster: dict, files=None) -> tuple:
+    """({roster id: gradebook row}, [submissions matching no student], [ids with no graded row])."""
+    files = files or {}
+    by_id, unmatched = {}, []
+    for row in gradebook_rows:
+        sid = _student_of(row, roster, files)
+        if sid is None:
+            unmatched.append(row["submission"])
+        elif row.get("score", "") != "":
+            if sid in by_id:
+                raise DHLabError(f"two submissions are from {sid!r}: {by_id[sid]['submission']!r} and "
+                                 f"{row['submission']!r}; keep one in the gradebook and export again.")
+            by_id[sid] = row
+    missing = [sid for sid in roster if sid not in by_id]
+    return by_id, unmatched, missing
+
+
+def _name(record: dict) -> str:
+    lowered = {k.lower(): v for k, v in record.items()}
+    for key in ("student", "name", "full name", "fullname"):
+        if lowered.get(key):
+            return lowered[key]
+    first, last = lowered.get("first name") or lowered.get("firstname"), lowered.get("last name") or lowered.get("surname")
+    return f"{last}, {first}" if first and last else ""
+
+
+def canvas_rows(by_id: dict, roster: dict, id_column: str, assignment: str, max_score) -> list:
+    """The Canvas import: header, the Points Possible row, one row per graded student."""
+    rows = [CANVAS_COLUMNS + [assignment], [POINTS_POSSIBLE, "", "", "", "", f"{float(max_score):g}"]]
+    for sid, grade in by_id.items():
+        record = roster[sid]
+        row = [record.get(c, "") for c in CANVAS_COLUMNS]
+        if not any(row[1:4]):                          # not Canvas's own roster: the id is the login
+            row[3] = sid
+        row[0] = row[0] or _name(record) or sid
+        rows.append(row + [grade["score"]])
+    return rows
+
+
+def moodle_rows(by_id: dict, id_column: str, feedback_dir=None) -> list:
+    """The Moodle import: the id column, grade, feedback (the text of the feedback file)."""
+    rows = [[id_column, "grade", "feedback"]]
+    for sid, grade in by_id.items():
+        text = ""
+        if feedback_dir is not None and grade.get("feedback"):
+            try:
+                text = (Path(feedback_dir) / grade["feedback"]).read_text(encoding="utf-8").strip()
+            except OSError:
+                text = grade.get("status", "")
+        rows.append([sid, grade["score"], text or grade.get("status", "")])
+    return rows
+
+
+def write(path, rows) -> None:
+    """A CSV file, UTF-8, comma-separated, every field quoted only when it must be."""
+    from .gradebook import write_atomic
+    buffer = io.StringIO()
+    csv.writer(buffer, lineterminator="\r\n").writerows(rows)
+    write_atomic(path, buffer.getvalue())
