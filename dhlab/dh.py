@@ -208,14 +208,19 @@ def links_from_table(rows, params, angles, qlim, revolute, prismatic) -> tuple:
     return links, symbols, params
 
 
-def _no_modified_links(links) -> None:
-    """A modified-DH link (RevoluteMDH) in a standard DH robot: say which convention it is."""
+def refuse_convention(links, convention: str, what: str, advice: str) -> None:
+    """A link of the other DH convention in a robot (``convention`` 'modified' in a DHRobot,
+    'standard' in an MDHRobot): say which link, which convention, and what to do."""
     if isinstance(links, (list, tuple)):
         for i, link in enumerate(links, start=1):
-            if getattr(link, "convention", "") == "modified":
-                raise DHLabError(f"link {i} is a modified-DH (Craig) link, {type(link).__name__}: a DHRobot is "
-                                 "standard DH. Build the robot with dhlab.MDHRobot, or convert it with "
-                                 "dhlab.to_standard(dhlab.MDHRobot(links)).")
+            if getattr(link, "convention", "") == convention:
+                raise DHLabError(f"link {i} is a {what} link, {type(link).__name__}: {advice}")
+
+
+def _no_modified_links(links) -> None:
+    refuse_convention(links, "modified", "modified-DH (Craig)",
+                      "a DHRobot is standard DH. Build the robot with dhlab.MDHRobot, or convert it with "
+                      "dhlab.to_standard(dhlab.MDHRobot(links)).")
 
 
 def _no_marked_angles(params, angles: dict, i: int) -> None:

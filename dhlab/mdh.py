@@ -45,7 +45,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .chain import Robot, _link_list
-from .dh import DHParameters, DHRobot, PrismaticDH, RevoluteDH, _parse, _rows, links_from_table
+from .dh import DHParameters, DHRobot, PrismaticDH, RevoluteDH, _parse, _rows, links_from_table, refuse_convention
 from .table import DHTable
 from .transforms import Rx, Rz, trans
 from .validation import DHLabError, describe
@@ -102,12 +102,9 @@ class MDHRobot(Robot):
 
     def __init__(self, links, name: str = "robot", base=None, tool=None,
                  params=None, joint_symbols=None, unit: str = ""):
-        if isinstance(links, (list, tuple)):
-            for i, link in enumerate(links, start=1):
-                if getattr(link, "convention", "") == "standard":
-                    raise DHLabError(f"link {i} is a standard DH link, {type(link).__name__}: an MDHRobot is "
-                                     "modified DH (Craig). Use RevoluteMDH / PrismaticMDH, or build a "
-                                     "dhlab.DHRobot and convert it with dhlab.to_modified(robot).")
+        refuse_convention(links, "standard", "standard DH",
+                          "an MDHRobot is modified DH (Craig). Use RevoluteMDH / PrismaticMDH, or build a "
+                          "dhlab.DHRobot and convert it with dhlab.to_modified(robot).")
         links = _link_list(links, MDHLink, "RevoluteMDH(...) or PrismaticMDH(...)")
         super().__init__(links, name=name, base=base, tool=tool, params=params,
                          joint_symbols=joint_symbols, unit=unit)

@@ -38,19 +38,9 @@ POINTS_POSSIBLE = "    Points Possible"      # Canvas's own export writes it so
 def read_roster_rows(path, id_column=None) -> tuple:
     """(the id column's name, {id: the roster row as a dict}), with clear errors (no such file, no
     id column, an empty or repeated id). Canvas's ``Points Possible`` row is not a student."""
-    from .release import _id_column
+    from .release import _id_column, csv_rows
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8-sig")
-    except OSError as exc:
-        raise DHLabError(f"cannot read the roster {str(path)!r}: {exc.strerror}.") from None
-    except UnicodeDecodeError:
-        raise DHLabError(f"the roster {str(path)!r} is not UTF-8 text: save it as 'CSV UTF-8'.") from None
-    try:
-        dialect = csv.Sniffer().sniff(text[:4096], delimiters=",;\t")
-    except csv.Error:
-        dialect = csv.excel
-    rows = [r for r in csv.reader(io.StringIO(text), dialect) if any(c.strip() for c in r)]
+    rows = csv_rows(path)
     if len(rows) < 2:
         raise DHLabError(f"the roster {str(path)!r} needs a header row and one row per student.")
     header = [h.strip() for h in rows[0]]

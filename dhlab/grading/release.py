@@ -51,10 +51,9 @@ _RESERVED = {"CON", "PRN", "AUX", "NUL", *(f"COM{i}" for i in range(1, 10)), *(f
 
 # --- the roster ------------------------------------------------------------------------------------
 
-def read_roster(path, id_column: str | None = None) -> list:
-    """The student ids of a roster CSV, in order, with clear errors: no such file, no header,
-    no id column, an empty id, a duplicate id."""
-    path = Path(path)
+def csv_rows(path) -> list:
+    """The non-empty rows of a roster CSV (comma, semicolon or tab; UTF-8, with or without BOM),
+    with clear errors for a missing file or another encoding."""
     try:
         text = path.read_text(encoding="utf-8-sig")
     except OSError as exc:
@@ -65,8 +64,14 @@ def read_roster(path, id_column: str | None = None) -> list:
         dialect = csv.Sniffer().sniff(text[:4096], delimiters=",;\t")
     except csv.Error:
         dialect = csv.excel
-    reader = csv.reader(io.StringIO(text), dialect)
-    rows = [r for r in reader if any(cell.strip() for cell in r)]
+    return [r for r in csv.reader(io.StringIO(text), dialect) if any(cell.strip() for cell in r)]
+
+
+def read_roster(path, id_column: str | None = None) -> list:
+    """The student ids of a roster CSV, in order, with clear errors: no such file, no header,
+    no id column, an empty id, a duplicate id."""
+    path = Path(path)
+    rows = csv_rows(path)
     if not rows:
         raise DHLabError(f"the roster {str(path)!r} is empty: it needs a header row and one row per student.")
     header = [h.strip() for h in rows[0]]
