@@ -74,8 +74,8 @@ class RobotView2D(RobotView):
                 self.axis_lines.append(ax.plot([], [], "-", color=c, lw=2.5, alpha=alpha, zorder=3)[0])
                 self.out_marks.append(ax.plot([], [], ls="", marker=r"$\odot$", ms=13, color=c, zorder=3)[0])
                 self.in_marks.append(ax.plot([], [], ls="", marker=r"$\otimes$", ms=13, color=c, zorder=3)[0])
-                self.letter_marks.append(ax.plot([], [], ls="", marker=letter, ms=LETTER_SIZE, mew=0, color=c, alpha=alpha,
-                                                 zorder=3.1, visible=self._labels_on)[0])
+                self.letter_marks.append(ax.plot([], [], ls="", marker=letter, ms=LETTER_SIZE, mew=0, color=c,
+                                                 alpha=alpha, zorder=3.1, visible=self._labels_on)[0])
         self.ee_marker, = ax.plot([], [], "*", color=EE_COLOR, mec="k", ms=15 if self.mechanism is None else 12,
                                   alpha=alpha, zorder=3.2)
         self.labels = FrameLabels(ax, self.frame_labels, alpha=alpha) if self._labels_on else None

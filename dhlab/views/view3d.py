@@ -66,7 +66,8 @@ class RobotView3D(RobotView):
                                       solid_capstyle="round", solid_joinstyle="round")
             self.joint_solids = Solids3D(np.zeros((0, 4, 3)), linewidths=0.5, zorder=2.2)
             self.joint_solids.opacity = alpha
-            ax.add_collection(self.joint_solids, autolim=False)   # already 3D (add_collection3d: no autolim before matplotlib 3.10)
+            # already 3D: add_collection (add_collection3d has no autolim before matplotlib 3.10)
+            ax.add_collection(self.joint_solids, autolim=False)
             self.gripper_line, = ax.plot([], [], [], "-", color=EE_COLOR, lw=3.5, alpha=alpha, zorder=2.4,
                                          solid_capstyle="round")
         self.axis_lines = [ax.plot([], [], [], "-", color=c, lw=2.5, alpha=alpha, zorder=3)[0]
