@@ -126,8 +126,7 @@ def problems(panel, start: bool):
         found.append("frame labels under 12 px")
     # the 3D box (its panes and edges) inside the figure
     if view.ax.name == "3d":
-        corners = framing.projected(view.ax, np.array(list(itertools.product(
-            view.ax.get_xlim(), view.ax.get_ylim(), view.ax.get_zlim()))))
+        corners = framing.projected(view.ax, framing.box_corners(view.ax))   # as matplotlib draws the box
         if (corners < fig_box.p0 - 1).any() or (corners > fig_box.p1 + 1).any():
             found.append(f"the 3D box is cut at the figure's edge: corners {corners.min(axis=0).round()}…"
                          f"{corners.max(axis=0).round()} in {np.round(fig_box.extents)}")

@@ -26,11 +26,12 @@ from __future__ import annotations
 
 import itertools
 
+import matplotlib
 import numpy as np
 from mpl_toolkits.mplot3d import proj3d
 
 __all__ = ["frame_box", "projected", "extent_fraction", "fit_zoom", "needs_reframe", "zoom_in_on",
-           "center_on",
+           "center_on", "box_corners", "PANE_MARGIN",
            "REFRAME_BELOW", "TARGET", "MIN_SIDE", "SLACK"]
 
 REFRAME_BELOW = 0.42      # re-frame when the robot spans less of its axes than this
@@ -39,6 +40,9 @@ SLACK = 0.04              # extra room on each side, as a fraction of the longes
 BOX_FILL = 0.98           # how much of the axes the zoomed 3D box fills
 TARGET = 0.62             # a fresh frame makes the robot span at least this much of its axes
 EDGE = 0.03               # re-frame when an origin comes this close to the axes' border
+# matplotlib before 3.9 (the browser edition's 3.8) draws the 3D box's panes 1/48 of each
+# range beyond the limits, on every side; from 3.9 on, exactly at the limits
+PANE_MARGIN = 1 / 48 if tuple(int(v) for v in matplotlib.__version__.split(".")[:2]) < (3, 9) else 0.0
 
 
 def frame_box(points, pad: float, slack: float = SLACK, min_side: float = MIN_SIDE) -> tuple:
@@ -72,8 +76,11 @@ def extent_fraction(ax, points, M=None) -> float:
     return float(max(span[0] / box.width, span[1] / box.height))
 
 
-def _box_corners(ax):
-    return np.array(list(itertools.product(ax.get_xlim(), ax.get_ylim(), ax.get_zlim())))
+def box_corners(ax):
+    """The 8 corners of the 3D box as matplotlib draws it (data coordinates)."""
+    limits = [ax.get_xlim(), ax.get_ylim(), ax.get_zlim()]
+    limits = [(lo - PANE_MARGIN * (hi - lo), hi + PANE_MARGIN * (hi - lo)) for lo, hi in limits]
+    return np.array(list(itertools.product(*limits)))
 
 
 def fit_zoom(ax, zoom: float = 1.0, fill: float = BOX_FILL) -> float:
@@ -83,7 +90,7 @@ def fit_zoom(ax, zoom: float = 1.0, fill: float = BOX_FILL) -> float:
     aspect = np.array([np.ptp(ax.get_xlim()), np.ptp(ax.get_ylim()), np.ptp(ax.get_zlim())])
     ax.set_box_aspect(aspect, zoom=1.0)
     ax.apply_aspect()
-    pixels = projected(ax, _box_corners(ax))
+    pixels = projected(ax, box_corners(ax))
     span = pixels.max(axis=0) - pixels.min(axis=0)
     box = ax.bbox
     best = fill * min(box.width / max(span[0], 1e-9), box.height / max(span[1], 1e-9)) * zoom
@@ -136,7 +143,7 @@ def zoom_in_on(ax, points, lo, hi, target: float = TARGET, zoom: float = 1.0, mo
     if fraction >= target or fraction <= 0:
         return lo, hi
     robot = np.ptp(projected(ax, points), axis=0)
-    box = np.ptp(projected(ax, _box_corners(ax)), axis=0)
+    box = np.ptp(projected(ax, box_corners(ax)), axis=0)
     room = 0.85 * float(np.min(box / np.maximum(robot, 1e-9)))
     grow = min(target / fraction, most, room)
     if grow <= 1:

@@ -28,7 +28,17 @@ import litedriver as driver
 NOTEBOOKS = sorted(p.name for p in driver.NOTEBOOKS.glob("*.ipynb"))
 SSRMS = "07_ssrms.ipynb"
 SLIDER = ".widget-slider"
+SCREENSHOTS = Path(__file__).resolve().parents[2] / "build" / "lite-screenshots"   # the first panel of each notebook
 FIGURE = ".widget-image, .jupyter-matplotlib-canvas-container canvas"
+BOX_INSIDE = """
+from dhlab.views import framing
+ax = panel.view.ax
+corners = framing.projected(ax, framing.box_corners(ax))
+box = ax.figure.bbox
+inside = (corners[:, 0] >= box.x0 - 1).all() and (corners[:, 0] <= box.x1 + 1).all() and \\
+    (corners[:, 1] >= box.y0 - 1).all() and (corners[:, 1] <= box.y1 + 1).all()
+print("inside" if inside else corners.round().tolist())
+"""
 MOVES = 11                                    # slider moves timed on the SSRMS (median reported)
 # Watch the panel's image: the time of the Enter key that sets a slider, and of the next new picture.
 JS_ARM = """(img) => {
@@ -139,7 +149,15 @@ def test_notebook_in_the_browser(name, site, visit, measurements):
         driver.wait_idle(page)
         time.sleep(0.5)
         assert (pixels(figure) != before).any(), "moving the slider did not change the figure"
-        if name == SSRMS:
+        # the figure is shown whole: a squeezed canvas or image cuts the 3D box at its left edge
+        shown = figure.evaluate("e => e.getBoundingClientRect().width")
+        natural = figure.evaluate("e => (e.width || e.naturalWidth) / window.devicePixelRatio")
+        assert shown == pytest.approx(natural, abs=2), f"the panel's figure is squeezed: {shown} px of {natural}"
+        SCREENSHOTS.mkdir(parents=True, exist_ok=True)
+        panel.screenshot(path=str(SCREENSHOTS / name.replace(".ipynb", ".png")))    # to look at
+        if name == SSRMS:           # the 3D box as this matplotlib draws it, inside the figure
+            box = driver.execute(page, BOX_INSIDE).split()
+            assert box == ["inside"], f"the teach panel's 3D box leaves its figure: {box}"
             measurements["ssrms: open -> kernel ready [s]"] = round(kernel_ready, 1)
             measurements["ssrms: open -> first slider move redrawn [s]"] = round(working, 1)
             moves = [move_slider(page, panel) for _ in range(MOVES)]
