@@ -117,6 +117,27 @@ def run_until_slider(page, code_cells):
     return None
 
 
+def check_slider_keys(page, panel):
+    """Arrow keys, Home and End on a focused slider handle move that slider, and the notebook's own
+    shortcuts (move to the next heading / cell) do not take them (lite/overrides.json)."""
+    handle = panel.locator(f"{SLIDER} .noUi-handle").first
+    low, high = (float(handle.get_attribute(f"aria-value{k}")) for k in ("min", "max"))
+    handle.focus()
+    page.keyboard.press("Home")
+    page.wait_for_function("(h) => Number(h.getAttribute('aria-valuenow')) === Number(h.getAttribute('aria-valuemin'))",
+                           arg=handle.element_handle(), timeout=10_000)
+    for _ in range(3):
+        page.keyboard.press("ArrowRight")
+    time.sleep(0.5)
+    moved = float(handle.get_attribute("aria-valuenow"))
+    assert moved > low, "ArrowRight on a slider's handle did not move it: the notebook took the key"
+    assert handle.evaluate("e => e === document.activeElement"), "the focus left the slider"
+    page.keyboard.press("End")
+    time.sleep(0.5)
+    assert float(handle.get_attribute("aria-valuenow")) == pytest.approx(high)
+    driver.wait_idle(page)
+
+
 def local_seconds(code: str) -> list[float]:
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     return [float(x) for x in result.stdout.split()]
@@ -158,6 +179,7 @@ def test_notebook_in_the_browser(name, site, visit, measurements):
         if name == SSRMS:           # the 3D box as this matplotlib draws it, inside the figure
             box = driver.execute(page, BOX_INSIDE).split()
             assert box == ["inside"], f"the teach panel's 3D box leaves its figure: {box}"
+            check_slider_keys(page, panel)
             measurements["ssrms: open -> kernel ready [s]"] = round(kernel_ready, 1)
             measurements["ssrms: open -> first slider move redrawn [s]"] = round(working, 1)
             moves = [move_slider(page, panel) for _ in range(MOVES)]
