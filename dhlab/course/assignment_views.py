@@ -74,13 +74,15 @@ def _arc(axis_point, w, radius, start_dir):
     return axis_point + radius * (np.outer(np.cos(t), u) + np.outer(np.sin(t), v))
 
 
-def _draw_links(ax, ref, links, label_points: bool, fontsize=8):
+def _draw_links(ax, ref, links, label_points, fontsize=10):
+    """The links ``links``, their points labelled for the links in ``label_points`` (True: all)."""
     seen = set()
     for k in links:
         P = ref.world_points(k)
         ax.plot(*P.T, "-o", color=f"C{k}", lw=4, ms=4, label=f"link {k}: {_puma.LINK_NAMES[k]}")
+        labelled = label_points is True or k in (label_points or ())
         for name, p in ref.points[k]:
-            if label_points and name not in seen:
+            if labelled and name not in seen:
                 seen.add(name)
                 ax.text(*(p + np.array([0.006, 0.0, 0.006])), name, fontsize=fontsize, color="0.15")
 
@@ -112,7 +114,7 @@ def puma_figure():
         return ref.figure()
     fig, (whole, wrist) = _new_axes(figsize=(12, 6.2), ncols=2)
     points = {name: p for link in ref.points for name, p in link}
-    _draw_links(whole, ref, range(ref.n + 1), label_points=True)
+    _draw_links(whole, ref, range(ref.n + 1), label_points=range(4))   # the wrist's points: on the right
     for i, anchor in zip((1, 2, 3, 4), ("B", "A", "E", "K")):
         _draw_axis(whole, ref, i, points[anchor], 0.25)
     for k, color in enumerate(("tab:red", "tab:green", "tab:blue")):
@@ -121,7 +123,7 @@ def puma_figure():
         whole.text(*(0.13 * e), f"${'xyz'[k]}_0$", color=color, fontsize=11)
     _square(whole)
     whole.set_title("home pose (q = 0), world frame 0 at the shoulder S", fontsize=10)
-    _draw_links(wrist, ref, (4, 5, 6), label_points=True, fontsize=9)
+    _draw_links(wrist, ref, (4, 5, 6), label_points=True, fontsize=11)
     M = points["M"]
     wrist.plot(*np.array([M - [0, 0, 0.1], M]).T, "-", color="C3", lw=4)       # the forearm's top
     for i, anchor in zip((4, 5, 6), ("M", "N", "F")):
@@ -129,9 +131,9 @@ def puma_figure():
     W = ref.wrist_centre
     _square(wrist, lo=W - np.array([0.1, 0.12, 0.13]), hi=W + np.array([0.1, 0.08, 0.15]))
     wrist.set_title("the wrist: axes 4, 5, 6 meet at W", fontsize=10)
-    fig.legend(*whole.get_legend_handles_labels(), loc="lower center", ncol=7, fontsize=8, frameon=False)
+    fig.legend(*whole.get_legend_handles_labels(), loc="lower center", ncol=4, fontsize=10, frameon=False)
     fig.suptitle("PUMA 560: joint axes J1…J6, their positive directions and senses (right-hand rule)")
-    fig.subplots_adjust(left=0.0, right=0.97, bottom=0.07, top=0.92, wspace=0.05)
+    fig.subplots_adjust(left=0.0, right=0.97, bottom=0.11, top=0.92, wspace=0.05)
     return fig
 
 
