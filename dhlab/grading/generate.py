@@ -20,7 +20,9 @@ generate_assignment`` instead:
   becomes the stub entirely (markdown: ``YOUR ANSWER HERE``);
 * in a grade cell, the lines from ``### BEGIN HIDDEN TESTS`` to ``### END HIDDEN TESTS``
   are removed;
-* a delimiter in a cell without that metadata is an error; outputs are cleared;
+* a delimiter in a cell without that metadata is an error; outputs are cleared, but for the
+  read-only cells that only show the robot (:data:`SHOWN`: its figure and tables, which depend on
+  no answer), so the student sees the robot before running anything;
   solution cells become undeletable, grade and read-only cells also uneditable.
 
 The notebook's ``language_info`` is cut to its name, so the student version does
@@ -56,6 +58,9 @@ CODE_STUB = "# YOUR CODE HERE"
 TEXT_STUB = "YOUR ANSWER HERE"
 BEGIN_SOLUTION, END_SOLUTION = "BEGIN SOLUTION", "END SOLUTION"
 BEGIN_HIDDEN, END_HIDDEN = "BEGIN HIDDEN TESTS", "END HIDDEN TESTS"
+# read-only cells that only show the robot (its figure, its axes and points): the student sees
+# their outputs before running anything (they depend on no answer); every other output is cleared
+SHOWN = ("robot_figure", "axes_table", "points_table")
 NBGRADER_KEYS = {"grade", "solution", "locked", "task", "grade_id", "points", "schema_version",
                  "checksum", "cell_type"}
 
@@ -148,8 +153,10 @@ def student_cell(cell: dict) -> dict:
     if removed and not is_grade:
         raise GenerateError("a hidden-tests region in a cell that is not a grade cell:\n" + _source(cell)[:200])
     cell["source"] = source
+    if cell["cell_type"] == "code" and not (meta.get("grade_id") in SHOWN and is_locked and not is_grade):
+        cell["outputs"] = []
     if cell["cell_type"] == "code":
-        cell["outputs"], cell["execution_count"] = [], None
+        cell["execution_count"] = None
     cell.get("metadata", {}).pop("execution", None)
     if is_solution or is_grade or is_locked:                   # nbgrader's LockCells
         cell["metadata"]["deletable"] = False
