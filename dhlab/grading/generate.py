@@ -170,6 +170,10 @@ def student_notebook(nb: dict) -> dict:
     check_metadata(nb["cells"])
     out = copy.deepcopy(nb)
     out["cells"] = [student_cell(c) for c in nb["cells"]]
+    code = [c for c in out["cells"] if c["cell_type"] == "code"]
+    for k, cell in enumerate(code, start=1):      # a shown output carries the count Run All gives it
+        if cell.get("outputs"):
+            cell["execution_count"] = k
     meta = out.setdefault("metadata", {})
     meta.pop("widgets", None)
     # what running the source wrote (the Python version...) is not part of the assignment
