@@ -1,5 +1,8 @@
 """The figures of notebook 7 (the SSRMS), drawn by the notebook's own code.
 
+* :func:`paso1_figure`, :func:`paso2_figure`, :func:`paso3_figure`: seed 000's method on the SSRMS, one
+  figure per step (its figures 7, 8–9 and 14): each z_i on joint A_(i+1)'s axis; the case of each x_i with
+  its common normal; the origins B_i and y_i = z_i × x_i;
 * :func:`links_figure`: each link of the SSRMS in its own frame, as seed 000 designs its pieces;
 * :func:`rot_x_figure`: Rot_x(−90°) seen from the tip of +x (erratum 000-1: it is clockwise);
 * :func:`seed001_figure`: the arm at zero built with seed 000's THz and with seed 001's faulty one.
@@ -12,13 +15,131 @@ from matplotlib.lines import Line2D
 from ..transforms import Rx
 from ..units import deg
 from ..views.figures import new_figure
+from ..views.triads import free_direction
 from .figures_common import AXIS_COLORS, fit_box, label, triad
+from .ssrms_steps import frames_b, x_steps, z_axes
 
-__all__ = ["links_figure", "rot_x_figure", "seed001_figure"]
+__all__ = ["paso1_figure", "paso2_figure", "paso3_figure", "links_figure", "rot_x_figure", "seed001_figure"]
 
 SKELETON = dict(color="0.62", lw=9, solid_capstyle="round")     # wide and light: the triad stays visible on it
 PREVIOUS_AXIS = dict(ls="--", color="0.35", lw=1.5)             # joint i's axis, z_(i-1)
 NEXT_AXIS = dict(ls="--", color=AXIS_COLORS[2], lw=1.5)         # joint i+1's axis, the local z
+
+
+# --- seed 000's Paso 1 … 3 on the arm at zero -------------------------------------------------------------
+AXIS_LINE = dict(ls="--", color="0.45", lw=1.2)                 # a joint's axis A_i, as a long line
+NORMAL = dict(color="tab:purple", lw=4, solid_capstyle="butt")   # a common normal (case 2)
+CAMERA = (20.0, -38.0)                                          # elevation, azimuth: every joint in sight
+
+
+def _arm_axes(fig, robot, title, rect=(0.0, 0.09, 1.0, 0.84)):
+    """A 3D axes with ``robot`` drawn faintly at θ = 0 (no triads): the steps are drawn over it."""
+    from ..views.view import robot_view
+
+    ax = fig.add_axes(rect, projection="3d")
+    robot_view(robot, robot.qz, ax=ax, triads=False, labels=False, alpha=0.35)
+    ax.computed_zorder = False
+    ax._robot_lines = len(ax.lines)             # what the steps draw next goes on top (_on_top)
+    points = np.asarray(robot.frames(robot.qz), dtype=float)[:, :3, 3]
+    fit_box(ax, points, pad=3.5)
+    ax.set_proj_type("ortho")
+    ax.view_init(*CAMERA)
+    ax.set_axis_off()                           # no box, no ticks: the steps are about the arm's lines
+    ax.set_box_aspect(np.ptp(points, axis=0) + 7, zoom=1.25)
+    fig.suptitle(title, fontsize=14, y=0.985)
+    return ax
+
+
+def _on_top(ax):
+    """Put what a step drew (the lines after the robot's own) over the joints' solids."""
+    for line in ax.lines[ax._robot_lines:]:
+        line.set_zorder(4)
+    for text in ax.texts:
+        text.set_zorder(5)
+
+
+def _arrow(ax, start, direction, length, color, lw=3.0):
+    end = np.asarray(start, dtype=float) + length * np.asarray(direction, dtype=float)
+    ax.plot(*np.array([start, end]).T, color=color, lw=lw, solid_capstyle="round")
+    ax.plot(*end[:, None], marker="o", ms=5, color=color)
+    return end
+
+
+# where each z_i's label goes, off the lines (in data units, added to the arrow's tip): seen from CAMERA
+Z_LABEL_SHIFT = {0: (-1.5, 0, 0.4), 1: (0, 0.8, 1.2), 2: (-1.6, 0, 0.6), 3: (-1.6, 0, 0.6), 4: (1.6, 0, 0.6),
+                 5: (0, -0.6, 1.3), 6: (1.6, 0, 0.4)}
+
+
+def paso1_figure(robot=None, length: float = 3.5):
+    """Paso 0 and 1 (seed 000, figure 7): the joints A_1 … A_n on their axes (dashed) and each z_i on the
+    axis of A_(i+1), from its origin. Returns the figure."""
+    from .. import robots
+
+    robot = robots.ssrms() if robot is None else robot
+    fig = new_figure((9.6, 7.0), layout=None)
+    ax = _arm_axes(fig, robot, "Paso 1: each $z_i$ on the axis of joint $A_{i+1}$")
+    for i, line in enumerate(z_axes(robot)):
+        ax.plot(*np.array([line.point - 4 * line.direction, line.point + 4.5 * line.direction]).T, **AXIS_LINE)
+        label(ax, line.point - 4.9 * line.direction, f"$A_{i + 1}$", color="0.3")
+        tip = _arrow(ax, line.point, line.direction, length, AXIS_COLORS[2])
+        label(ax, tip + np.array(Z_LABEL_SHIFT.get(i, (1.2, 0, 0.5))), f"$z_{i}$", color=AXIS_COLORS[2])
+    handles = [Line2D([], [], label="axis of joint $A_i$ (articulación)", **AXIS_LINE),
+               Line2D([], [], color=AXIS_COLORS[2], lw=3, label="$z_{i-1}$, on the axis of $A_i$")]
+    _on_top(ax)
+    fig.legend(handles=handles, loc="lower center", ncols=2, fontsize=12, frameon=False)
+    return fig
+
+
+def paso2_figure(robot=None, length: float = 3.5):
+    """Paso 2 (seed 000, figures 8 and 9): each x_i (red) with its case; for parallel axes (case 2) the
+    common normal chosen (purple) from z_(i−1) to z_i, where B_i is placed. Returns the figure."""
+    from .. import robots
+
+    robot = robots.ssrms() if robot is None else robot
+    fig = new_figure((9.6, 7.0), layout=None)
+    ax = _arm_axes(fig, robot, "Paso 2: the case of each $x_i$")
+    for i, line in enumerate(z_axes(robot)):
+        ax.plot(*np.array([line.point - 4 * line.direction, line.point + 4 * line.direction]).T,
+                color=AXIS_COLORS[2], lw=1.2, alpha=0.6)
+    for step in x_steps(robot):
+        if step.case == 1:
+            ax.plot(*step.origin[:, None], marker="o", ms=9, mfc="white", mec="k", mew=1.5)
+        else:
+            ax.plot(*np.array([step.foot, step.origin]).T, **NORMAL)
+        tip = _arrow(ax, step.origin, step.x, length, AXIS_COLORS[0])
+        label(ax, tip + (0.7, 0, 0), f"$x_{step.i}$: case {step.case}", color=AXIS_COLORS[0], ha="left")
+    handles = [Line2D([], [], color=AXIS_COLORS[2], lw=1.2, label="$z_i$ lines"),
+               Line2D([], [], ls="", marker="o", ms=9, mfc="white", mec="k", label="case 1: where they meet"),
+               Line2D([], [], label="case 2: a common normal", **NORMAL)]
+    _on_top(ax)
+    fig.legend(handles=handles, loc="lower center", ncols=3, fontsize=12, frameon=False)
+    return fig
+
+
+def paso3_figure(robot=None, length: float = 3.0):
+    """Paso 3 (seed 000, figure 14): every frame B_0 … B_n at its origin, y_i = z_i × x_i drawn thick.
+    Frames at one point share one label. Returns the figure."""
+    from .. import robots
+
+    robot = robots.ssrms() if robot is None else robot
+    fig = new_figure((9.6, 7.0), layout=None)
+    ax = _arm_axes(fig, robot, "Paso 3: $y_i = z_i \\times x_i$ completes each $B_i$")
+    frames = frames_b(robot)
+    names = {}
+    for i, F in enumerate(frames):
+        names.setdefault(tuple(F[:3, 3].round(9)), []).append(i)
+    for i, F in enumerate(frames):
+        triad(ax, F, length, letters=False, lw=2.0)
+        ax.plot(*np.array([F[:3, 3], F[:3, 3] + length * F[:3, 1]]).T, color=AXIS_COLORS[1], lw=4.5)
+    for point, ids in names.items():                     # beside the origin, away from every axis drawn there
+        others = [frames[k][:3, j] for k in ids[1:] for j in range(3)]
+        away = free_direction(ax, frames[ids[0]], avoid=others)
+        label(ax, np.array(point) + 0.75 * length * away, "$B_{" + ",".join(map(str, ids)) + "}$")
+    handles = [Line2D([], [], color=c, lw=w, label=t) for c, w, t in
+               ((AXIS_COLORS[0], 2, "$x_i$"), (AXIS_COLORS[1], 4.5, "$y_i = z_i \\times x_i$"), (AXIS_COLORS[2], 2, "$z_i$"))]
+    _on_top(ax)
+    fig.legend(handles=handles, loc="lower center", ncols=3, fontsize=12, frameon=False)
+    return fig
 
 
 # --- each link in its own frame ------------------------------------------------------------------
