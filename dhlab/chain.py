@@ -91,12 +91,15 @@ class Factor:
         return trans(*shift)
 
     def __str__(self):
-        name = ("R" if self.kind == "R" else "T") + self.axis
+        """``Rz(q)``, ``Rx(-pi/2)`` for a rotation; ``Tr(0, l1, 0)`` for a translation (the course's
+        one name for a pure translation: ``Tz``/``Tx`` are seed 000's combined factors)."""
         var = ("-" if self.sign < 0 else "") + "q"
         amount = var if self.joint else str(self.value)
         if self.joint and self.value != 0:
             amount = f"{var} + {self.value}"
-        return f"{name}({amount})"
+        if self.kind == "R":
+            return f"R{self.axis}({amount})"
+        return "Tr(" + ", ".join(amount if k == AXES[self.axis] else "0" for k in range(3)) + ")"
 
 
 def _sign(sign, what: str) -> int:
