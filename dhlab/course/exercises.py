@@ -387,10 +387,12 @@ def _ex_4_5():
     why_not_a = ("branch A has the smaller slider value, q1A = x − l1 − l2·√(1 − (y/l2)²): for a target this "
                  "close to the base, is it still ≥ 0?")
     return Exercise("4.5", "predict: which branch survives the slider's range", lambda a: check_choice(
-        a, "B", name="your predicted branch", accepted=("branch B", "the B branch"),
-        explanations={"A": why_not_a, "branch A": why_not_a,
-                      "both": "compute q1 for each branch: one of them is below the slider's range 0 ≤ q1 ≤ 2.",
-                      "none": "compute q1 for each branch: one of them is within the slider's range 0 ≤ q1 ≤ 2."}),
+        a, "B", name="your predicted branch", accepted=("branch B", "the B branch", "rama B", "la rama B"),
+        explanations={"A": why_not_a, "branch A": why_not_a, "rama A": why_not_a, "la rama A": why_not_a,
+                      **dict.fromkeys(("both", "ambas", "las dos"), "compute q1 for each branch: one of them is "
+                                      "below the slider's range 0 ≤ q1 ≤ 2."),
+                      **dict.fromkeys(("none", "ninguna"), "compute q1 for each branch: one of them is within "
+                                      "the slider's range 0 ≤ q1 ≤ 2.")}),
         ["q1B − q1A = 2·l2·√(1 − (y/l2)²) ≥ 0: branch A always has the smaller q1.",
          "Compute q1A = x − l1 − l2·√(1 − (y/l2)²) for (x, y) = (1.2, 0.25)."])
 

@@ -386,6 +386,7 @@ def _joint_types(value) -> list:
 _CASE_WORDS = {
     "intersect": "intersect", "intersecting": "intersect", "intersects": "intersect",
     "intersection": "intersect", "se intersecan": "intersect", "intersecan": "intersect",
+    "se cortan": "intersect", "cortan": "intersect",
     "case 1": "intersect", "caso 1": "intersect", "1": "intersect",
     "parallel": "parallel", "paralelos": "parallel", "paralelo": "parallel", "case 2": "parallel",
     "caso 2": "parallel", "2": "parallel",
