@@ -288,6 +288,12 @@ class Robot:
         return [_label(s) for s in self.q_symbols]
 
     @property
+    def numeric_links(self) -> list:
+        """Per link, its motions with numbers for their constants: ``(kind, axis, value, is_joint,
+        sign)``, kind 'R'/'T', axis 0/1/2 (what the fast kinematics and the views' mechanism use)."""
+        return [list(factors) for factors in self._numeric]
+
+    @property
     def qz(self) -> np.ndarray:
         """The zero configuration."""
         return np.zeros(self.n)

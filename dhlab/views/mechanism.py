@@ -115,7 +115,7 @@ class Mechanism:
     def __init__(self, robot, size: float):
         from matplotlib.colors import to_rgb
         self.robot, self.size = robot, float(size)
-        self.links = robot._numeric          # per link: (kind, axis, value, is_joint, sign), numbers
+        self.links = robot.numeric_links     # per link: (kind, axis, value, is_joint, sign), numbers
         self.has_tool = not np.allclose(np.asarray(robot.tool, dtype=float), np.eye(4))
         s = self.size
         self._cylinder = cylinder(CYLINDER_RADIUS * s, CYLINDER_HALF * s)

@@ -159,7 +159,9 @@ class RobotView:
         size = typical_size(robot)
         self.triad_length = triad_length(robot, size)
         self.has_tool = not np.allclose(np.asarray(robot.tool, dtype=float), np.eye(4))
-        self.mechanism = Mechanism(robot, size) if self.style == "mechanism" else None
+        # a robot that is not a chain of elementary motions (no numeric_links) is drawn as a stick figure
+        drawable = hasattr(robot, "numeric_links")
+        self.mechanism = Mechanism(robot, size) if self.style == "mechanism" and drawable else None
         self.shape = None                     # the mechanism at the current pose
         self.show_triads = as_flag(triads, "triads")
         self._labels_on = as_flag(labels, "labels")
