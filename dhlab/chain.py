@@ -4,7 +4,7 @@ Not every robot of the course is written in DH form: seed 004's first robot is
 ``Rz(θ0)·Tr(0, l1, 0) · Rz(θ1)·Tr(l2, 0, 0)``. So a link here is any product
 of elementary motions (rotations about, and translations along, x, y or z),
 exactly one of which carries the joint variable. A DH link is the special case
-``Rz(θ)·Tz(d)·Tx(a)·Rx(α)`` (see :mod:`dhlab.dh`). Both kinds go through the
+``Rz(θ)·Tr(0, 0, d)·Tr(a, 0, 0)·Rx(α)`` (see :mod:`dhlab.dh`). Both kinds go through the
 same forward-kinematics code (:mod:`dhlab.kinematics`).
 
 >>> import sympy as sp

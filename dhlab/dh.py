@@ -1,4 +1,4 @@
-"""Standard Denavit-Hartenberg robots: ``A_i = Rz(θ_i)·Tz(d_i)·Tx(a_i)·Rx(α_i)``.
+"""Standard Denavit-Hartenberg robots: ``A_i = Rz(θ_i)·Tr(0, 0, d_i)·Tr(a_i, 0, 0)·Rx(α_i)``.
 
 A DH link is a :class:`~dhlab.chain.Link` with exactly those four motions; the
 joint variable is added to θ (revolute) or to d (prismatic). Angles are radians:
@@ -71,7 +71,7 @@ class DHParameters(Link):
         else:
             self.offset = _check_length_param(offset, "offset (added to the joint displacement)")
             along_z = [Rot("z", self.theta), Move("z", self.offset, joint=True)]
-        along_x = [Move("x", self.a), Rot("x", self.alpha)]      # Tx(a) and Rx(α) commute
+        along_x = [Move("x", self.a), Rot("x", self.alpha)]      # Tr(a, 0, 0) and Rx(α) commute
         super().__init__(self.motions(along_z, along_x), name=name, qlim=qlim)
 
     @staticmethod
@@ -84,7 +84,7 @@ class DHParameters(Link):
 
 
 class DHLink(DHParameters):
-    """Common part of RevoluteDH and PrismaticDH: ``A_i = Rz(θ_i)·Tz(d_i)·Tx(a_i)·Rx(α_i)``."""
+    """Common part of RevoluteDH and PrismaticDH: ``A_i = Rz(θ_i)·Tr(0, 0, d_i)·Tr(a_i, 0, 0)·Rx(α_i)``."""
 
     convention = "standard"
 

@@ -3,13 +3,13 @@
 The course uses **standard** DH (Spong, Corke, the seeds): frame i sits on the axis of
 joint i+1 and
 
-    A_i = Rz(θ_i)·Tz(d_i)·Tx(a_i)·Rx(α_i).
+    A_i = Rz(θ_i)·Tr(0, 0, d_i)·Tr(a_i, 0, 0)·Rx(α_i).
 
 Craig's *Introduction to Robotics* (and many datasheets) use **modified** DH: frame i
 sits on the axis of joint i itself, and the link matrix takes the same four motions in
 the other order, with the x motions of the link before:
 
-    A_i = Rx(α_(i−1))·Tx(a_(i−1))·Rz(θ_i)·Tz(d_i).
+    A_i = Rx(α_(i−1))·Tr(a_(i−1), 0, 0)·Rz(θ_i)·Tr(0, 0, d_i).
 
 In both, x_i runs along the common normal of the axes of joints i and i+1, so θ_i and
 d_i are the same numbers; only a and α move by one row. Tables here keep the course's
@@ -33,9 +33,9 @@ Converting shifts a and α by one row. What falls off an end goes into a fixed t
 so that the end effector's pose is the same at every configuration:
 
 * standard → modified (:func:`to_modified`): the last row's a_n, α_n have no row; the
-  tool takes them, ``tool' = Tx(a_n)·Rx(α_n)·tool`` (the first row's a_0 = α_0 = 0);
+  tool takes them, ``tool' = Tr(a_n, 0, 0)·Rx(α_n)·tool`` (the first row's a_0 = α_0 = 0);
 * modified → standard (:func:`to_standard`): the first row's a_0, α_0 have no row; the
-  base takes them, ``base' = base·Rx(α_0)·Tx(a_0)`` (the last row's a_n = α_n = 0).
+  base takes them, ``base' = base·Rx(α_0)·Tr(a_0, 0, 0)`` (the last row's a_n = α_n = 0).
 
 The intermediate frames differ (frame i moves from joint i+1's axis to joint i's):
 only the base, the joint axes and the end effector are the same.
@@ -55,7 +55,8 @@ __all__ = ["RevoluteMDH", "PrismaticMDH", "MDHRobot", "mdh_matrix", "to_modified
 
 
 def mdh_matrix(theta, d, a, alpha):
-    """The modified DH (Craig) matrix ``Rx(α)·Tx(a)·Rz(θ)·Tz(d)`` of row (θ_i, d_i, a_(i−1), α_(i−1)).
+    """The modified DH (Craig) matrix ``Rx(α)·Tr(a, 0, 0)·Rz(θ)·Tr(0, 0, d)`` of row
+    (θ_i, d_i, a_(i−1), α_(i−1)).
 
     >>> import sympy as sp
     >>> th, d, a, al = sp.symbols("theta d a alpha")
@@ -69,7 +70,8 @@ def mdh_matrix(theta, d, a, alpha):
 
 
 class MDHLink(DHParameters):
-    """Common part of RevoluteMDH and PrismaticMDH: ``A_i = Rx(α_(i−1))·Tx(a_(i−1))·Rz(θ_i)·Tz(d_i)``.
+    """Common part of RevoluteMDH and PrismaticMDH:
+    ``A_i = Rx(α_(i−1))·Tr(a_(i−1), 0, 0)·Rz(θ_i)·Tr(0, 0, d_i)``.
     Its ``a`` and ``alpha`` are a_(i−1), α_(i−1): the common normal from the previous joint's axis."""
 
     convention = "modified"
@@ -148,7 +150,7 @@ def _robot(robot, cls, what: str):
 def to_modified(robot) -> MDHRobot:
     """The same robot as a modified-DH (Craig) table: row i takes a_(i−1), α_(i−1) of the standard
     row above it (a_0 = α_0 = 0), and the tool takes the last row's a_n, α_n:
-    ``tool' = Tx(a_n)·Rx(α_n)·tool``. Same base, joints, limits and end-effector pose."""
+    ``tool' = Tr(a_n, 0, 0)·Rx(α_n)·tool``. Same base, joints, limits and end-effector pose."""
     robot = _robot(robot, DHRobot, "to_modified")
     links, above = [], (0, 0)
     for link in robot.links:
@@ -162,7 +164,7 @@ def to_modified(robot) -> MDHRobot:
 
 def to_standard(robot) -> DHRobot:
     """The same robot as a standard DH table: row i takes a_i, α_i from the modified row below it
-    (a_n = α_n = 0), and the base takes the first row's a_0, α_0: ``base' = base·Rx(α_0)·Tx(a_0)``.
+    (a_n = α_n = 0), and the base takes the first row's a_0, α_0: ``base' = base·Rx(α_0)·Tr(a_0, 0, 0)``.
     Same tool, joints, limits and end-effector pose."""
     robot = _robot(robot, MDHRobot, "to_standard")
     links = [_same_joint(link, (RevoluteDH, PrismaticDH), below.a, below.alpha)
@@ -190,7 +192,7 @@ def _typed_rows(rows) -> list:
 def to_modified_rows(rows) -> tuple:
     """Standard rows ``(θ_i, d_i, a_i, α_i)``, typed as for ``from_table``, as modified rows
     ``(θ_i, d_i, a_(i−1), α_(i−1))``, and the pair ``(a_n, α_n)`` left over, which the tool
-    must take: ``tool' = Tx(a_n)·Rx(α_n)·tool`` (nothing to do when both are 0).
+    must take: ``tool' = Tr(a_n, 0, 0)·Rx(α_n)·tool`` (nothing to do when both are 0).
 
     >>> to_modified_rows([("q1", 0.5, 0.2, -90), ("q2 - 90", 0, 0.5, 0)])
     ([('q1', 0.5, 0, 0), ('q2 - 90', 0, 0.2, -90)], (0.5, 0))
@@ -203,7 +205,7 @@ def to_modified_rows(rows) -> tuple:
 def to_standard_rows(rows) -> tuple:
     """Modified rows ``(θ_i, d_i, a_(i−1), α_(i−1))`` as standard rows ``(θ_i, d_i, a_i, α_i)``,
     and the pair ``(a_0, α_0)`` left over, which the base must take:
-    ``base' = base·Rx(α_0)·Tx(a_0)`` (nothing to do when both are 0).
+    ``base' = base·Rx(α_0)·Tr(a_0, 0, 0)`` (nothing to do when both are 0).
 
     >>> to_standard_rows([('q1', 0.5, 0, 0), ('q2 - 90', 0, 0.2, -90)])
     ([('q1', 0.5, 0.2, -90), ('q2 - 90', 0, 0, 0)], (0, 0))

@@ -22,7 +22,7 @@ more than one full turn is refused: it is almost always degrees by mistake.
 
 Seed 000 names two products ``Tz[θ, z] = Rz(θ)·Tr(0,0,z)`` and
 ``Tx[α, x] = Tr(x,0,0)·Rx(α)``; their product is the Denavit-Hartenberg matrix
-``dh_matrix(θ, d, a, α) = Rz(θ)·Tz(d)·Tx(a)·Rx(α)``.
+``dh_matrix(θ, d, a, α) = Rz(θ)·Tr(0, 0, d)·Tr(a, 0, 0)·Rx(α)``.
 """
 from __future__ import annotations
 
@@ -111,7 +111,7 @@ def Tx(alpha, x):
 
 
 def dh_matrix(theta, d, a, alpha):
-    """The standard DH matrix ``A = Rz(θ)·Tz(d)·Tx(a)·Rx(α)`` (= seed 000's Tz[θ,d]·Tx[α,a]).
+    """The standard DH matrix ``A = Rz(θ)·Tr(0, 0, d)·Tr(a, 0, 0)·Rx(α)`` (= seed 000's Tz[θ,d]·Tx[α,a]).
 
     >>> import sympy as sp
     >>> th, d, a, al = sp.symbols("theta d a alpha")
