@@ -100,7 +100,7 @@ def typical_size(robot, samples: int = 200) -> float:
 
 
 def triad_length(robot, size: float) -> float:
-    """How long a triad is drawn: a fraction of the robot's size, and at least a third of its
+    """How long a triad is drawn: a fraction of the robot's size, and at least a quarter of its
     typical link, so that a two-link arm's frames read as well as a seven-joint arm's."""
     origins = np.asarray(robot.frames(default_q(robot)), dtype=float)[:, :3, 3]
     links = np.linalg.norm(np.diff(origins, axis=0), axis=1)
