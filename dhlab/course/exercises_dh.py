@@ -57,9 +57,10 @@ _COURSE = {
         "Look at z_(i−1) and z_i (the axes of joints i and i+1): do they meet, are they parallel, or neither?",
         "Skew lines are not parallel and never meet: their common normal is unique (case 3)."]),
     "5.2": lambda: Exercise("5.2", "a DH row from two frames", check_dh_row, [
-        "Work in frame i−1: A = inv(S_prev) @ S_next is the link's matrix; compare it with the closed "
-        "form of rule 14.",
-        "θ = atan2(A[1,0], A[0,0]), α = atan2(A[2,1], A[2,2]), d = A[2,3]; then a from A[0,3] = a·cos θ.",
+        "Read the figure, one motion at a time: θ turns about z_(i−1) until x_(i−1) points along x_i; "
+        "d is how far along z_(i−1) the foot of x_i (where x_i crosses z_(i−1)) is from O_(i−1).",
+        "a is how far O_i is from that foot, measured along x_i; α turns about x_i until z_(i−1) "
+        "points along z_i (right-hand rule for the signs).",
         "Give the angles in degrees."]),
     "5.3": lambda: Exercise("5.3", "the table of the 4-axis arm", lambda rows: check_table(rows, "arm"),
                             _rows_hint_arm()),
