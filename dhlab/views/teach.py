@@ -28,18 +28,29 @@ __all__ = ["teach", "TeachPanel", "pose_text", "matrix_html"]
 def pose_text(T, unit: str = "") -> str:
     """The end-effector position and roll-pitch-yaw (degrees) of pose ``T``, as HTML.
 
-    Each line keeps to one line (``white-space: nowrap``): a longer number never re-wraps
-    the text, so the panel does not change height while a slider moves.
+    The numbers sit in cells of a fixed width (``x = …`` under its heading): a longer
+    number never widens or re-wraps the readout, so the panel keeps its size while a
+    slider moves.
 
     >>> import numpy as np
-    >>> print(pose_text(np.eye(4), "m"))
-    <div style="white-space:nowrap"><b>End effector</b> (<i>efector final</i>)<br>position [m]: x = 0.000, y = 0.000, z = 0.000<br>roll-pitch-yaw [°]: roll = 0.00, pitch = 0.00, yaw = 0.00</div>
+    >>> import re
+    >>> print(" ".join(re.sub("<[^>]+>", " ", pose_text(np.eye(4), "m")).split()))  # doctest: +NORMALIZE_WHITESPACE
+    End effector ( efector final ) position [m], roll-pitch-yaw [°]:
+    x = 0.000 y = 0.000 z = 0.000 roll = 0.00 pitch = 0.00 yaw = 0.00
     """
     x, y, z = np.round(np.asarray(T, dtype=float)[:3, 3], 3) + 0.0    # + 0.0: no "-0.000"
     roll, pitch, yaw = np.round(np.degrees(rpy(T)), 2) + 0.0
-    return ('<div style="white-space:nowrap"><b>End effector</b> (<i>efector final</i>)<br>'
-            f"position [{unit or 'length'}]: x = {x:.3f}, y = {y:.3f}, z = {z:.3f}<br>"
-            f"roll-pitch-yaw [°]: roll = {roll:.2f}, pitch = {pitch:.2f}, yaw = {yaw:.2f}</div>")
+
+    def row(cells):
+        return "<tr>" + "".join(f'<td style="{_CELL}">{c}</td>' for c in cells) + "</tr>"
+    return (f"<b>End effector</b> (<i>efector final</i>)<br>position [{unit or 'length'}], "
+            "roll-pitch-yaw [°]:"
+            '<table style="border-collapse:collapse;table-layout:fixed">'
+            + row([f"x = {x:.3f}", f"y = {y:.3f}", f"z = {z:.3f}"])
+            + row([f"roll = {roll:.2f}", f"pitch = {pitch:.2f}", f"yaw = {yaw:.2f}"]) + "</table>")
+
+
+_CELL = "width:7.6em;padding:0 .6em 0 0;white-space:nowrap;font-variant-numeric:tabular-nums"
 
 
 def matrix_html(T, title: str = "<sup>0</sup>T<sub>n</sub>") -> str:

@@ -55,9 +55,11 @@ def move_first_slider(page, output) -> tuple:
     before = settled(figure, pause=0.2)
     handle = output.locator(".widget-slider .noUi-handle").first
     changed = 0.0
-    for key in ("ArrowRight", "ArrowLeft"):        # a slider at its maximum only moves left
+    # a slider at its maximum only moves left; a step-through whose first motion is null (θ = 0)
+    # changes nothing until the next motion: End takes it to the last one
+    for key, presses in (("ArrowRight", 12), ("ArrowLeft", 12), ("End", 1)):
         handle.focus()
-        for _ in range(12):
+        for _ in range(presses):
             page.keyboard.press(key)
         time.sleep(0.3)
         changed = changed_fraction(before, settled(figure, pause=0.2))
