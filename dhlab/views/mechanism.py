@@ -174,7 +174,8 @@ class Mechanism:
         colors = shade(self._rgb, face_normals(faces), self._alpha) if len(faces) else np.zeros((0, 4))
         kept = [p for p in path if np.isfinite(p).all()]
         outline = np.vstack([gripper[np.isfinite(gripper).all(axis=1)], *extra])
-        return Shape(np.array(path), faces, colors, gripper, np.array(joints).reshape(-1, 3), np.array(kept), outline)
+        return Shape(np.array(path), faces, colors, gripper, np.array(joints).reshape(-1, 3),
+                     np.array(kept), outline)
 
     def _place_joint(self, j, kind, axis, M, amount) -> np.ndarray:
         R, p = _axes_of(M, axis), M[:3, 3]
