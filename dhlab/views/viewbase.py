@@ -108,6 +108,14 @@ def triad_length(robot, size: float) -> float:
     return max(TRIAD_FRACTION * size, LINK_FRACTION * float(np.median(links)) if len(links) else 0.0)
 
 
+def points_along(path, t=(0.25, 0.5, 0.75)) -> np.ndarray:
+    """Points at fractions ``t`` of every segment of ``path`` (p, 3); NaN rows break the path."""
+    a, b = path[:-1], path[1:]
+    whole = np.isfinite(a).all(axis=1) & np.isfinite(b).all(axis=1)
+    a, b = a[whole], b[whole]
+    return (a[None] + np.asarray(t, dtype=float)[:, None, None] * (b - a)[None]).reshape(-1, 3)
+
+
 def line_in_box(point, direction, lo, hi) -> np.ndarray:
     """The two ends of the piece of the line ``point + t·direction`` inside the box
     [lo, hi] (matplotlib's 3D axes do not clip lines at their limits)."""
@@ -306,21 +314,17 @@ class RobotView:
         return zoom
 
     def _strokes(self, frames) -> np.ndarray:
-        """Points along the links and the triads, for the labels to keep off."""
-        origins = frames[:, :3, 3]
-        t = np.array([0.25, 0.5, 0.75])[:, None]
-        along_links = [a + t * (b - a) for a, b in zip(origins[:-1], origins[1:])]
-        s = np.array([0.5, 1.0])[:, None]
-        along_axes = [frame[:3, 3] + s * self.triad_length * frame[:3, k]
-                      for frame in frames for k in range(3)] if self.show_triads else []
-        if self.show_triads and self._labels_on:      # the letters at the tips
-            along_axes += [np.vstack(letter_points(frames, self.triad_length))]
-        if self.shape is not None:                    # the joints' solids, the gripper, the d and a segments
-            path = self.shape.path
-            along_links = [p for a, b in zip(path[:-1], path[1:]) if np.isfinite(a).all() and np.isfinite(b).all()
-                           for p in a + t * (b - a)]
-            along_links = [np.array(along_links).reshape(-1, 3), self.shape.outline]
-        return np.vstack(along_links + along_axes) if along_links or along_axes else np.zeros((0, 3))
+        """Points along the links (the mechanism's d and a segments, or the stick figure), on the
+        joints' solids and the gripper, and along the triads and their letters: what labels keep off."""
+        pieces = [points_along(self.shape.path if self.shape is not None else frames[:, :3, 3])]
+        if self.shape is not None:
+            pieces.append(self.shape.outline)
+        if self.show_triads:
+            origins, axes = frames[:, None, :3, 3], frames[:, :3, :3].transpose(0, 2, 1)   # axes[m, k] = axis k
+            pieces += [(origins + s * self.triad_length * axes).reshape(-1, 3) for s in (0.5, 1.0)]
+            if self._labels_on:                       # the letters at the tips
+                pieces += letter_points(frames, self.triad_length)
+        return np.vstack(pieces)
 
     def _joint_axis_points(self, lo, hi) -> np.ndarray:
         """Long dashed lines through origin i-1 along z_(i-1), i = 1…n, inside the box."""
