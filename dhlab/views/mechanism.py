@@ -90,14 +90,12 @@ def shade(rgb: np.ndarray, normals: np.ndarray, alpha: np.ndarray) -> np.ndarray
 class Shape:
     """The mechanism at one pose: ``path`` (p, 3) the links with NaN breaks; ``faces``
     (F, K, 3) the joints' solids with ``colors`` (F, 4); ``gripper`` (g, 3) lines with NaN
-    breaks; ``joints`` (n, 3) where each joint sits; ``points`` the corners of the links
-    (origins and knees: what a view frames); ``outline`` points on the solids and the
-    gripper (what labels keep off)."""
+    breaks; ``points`` the corners of the links (origins and knees: what a view frames);
+    ``outline`` points on the solids and the gripper (what labels keep off)."""
     path: np.ndarray
     faces: np.ndarray
     colors: np.ndarray
     gripper: np.ndarray
-    joints: np.ndarray
     points: np.ndarray
     outline: np.ndarray
 
@@ -114,7 +112,7 @@ class Mechanism:
 
     def __init__(self, robot, size: float):
         from matplotlib.colors import to_rgb
-        self.robot, self.size = robot, float(size)
+        self.size = float(size)
         self.links = robot.numeric_links     # per link: (kind, axis, value, is_joint, sign), numbers
         self.has_tool = not np.allclose(np.asarray(robot.tool, dtype=float), np.eye(4))
         s = self.size
@@ -144,7 +142,7 @@ class Mechanism:
     # --- one pose ---------------------------------------------------------------------
     def shape(self, frames: np.ndarray, q: np.ndarray) -> Shape:
         """The mechanism for the frames 0…n (and the tool, if any) of the pose ``q``."""
-        path, faces, joints, extra = [], [], [], []
+        path, faces, extra = [], [], []
         for j, factors in enumerate(self.links):
             M, approach = frames[j], None
             link_path = [M[:3, 3]]
@@ -153,7 +151,6 @@ class Mechanism:
                 if is_joint:
                     solid = self._place_joint(j, kind, axis, M, amount)
                     faces.append(solid)
-                    joints.append(M[:3, 3])
                     extra.append(solid[self._outline[j]].reshape(-1, 3))
                 M = M @ elementary(kind, axis, amount)
                 moved = kind == "T" and abs(amount) > 1e-12 * max(self.size, 1.0)
@@ -174,8 +171,7 @@ class Mechanism:
         colors = shade(self._rgb, face_normals(faces), self._alpha) if len(faces) else np.zeros((0, 4))
         kept = [p for p in path if np.isfinite(p).all()]
         outline = np.vstack([gripper[np.isfinite(gripper).all(axis=1)], *extra])
-        return Shape(np.array(path), faces, colors, gripper, np.array(joints).reshape(-1, 3),
-                     np.array(kept), outline)
+        return Shape(np.array(path), faces, colors, gripper, np.array(kept), outline)
 
     def _place_joint(self, j, kind, axis, M, amount) -> np.ndarray:
         R, p = _axes_of(M, axis), M[:3, 3]
