@@ -13,7 +13,7 @@ Every method's poses are checked against dhlab's before its time is reported.
 Reports the median rate and the spread (min–max) over the repeats (run round robin), and ratios.
 Then the boundary check alone (dhlab.validation.check_joint_values) on the same N
 configurations, for the PUMA (6 revolute joints) and seed 002's 4-DOF robot (two
-prismatic joints: the deg() mark and size checks), as a share of fk's time.
+prismatic joints: the deg2rad() mark and size checks), as a share of fk's time.
 """
 from __future__ import annotations
 

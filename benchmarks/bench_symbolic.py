@@ -88,7 +88,7 @@ def main(argv=None):
 
 
 def general_chain(n):
-    return dhlab.DHRobot([dhlab.RevoluteDH(a=0.1, alpha=dhlab.deg(30))] * n, name=f"{n}-joint chain")
+    return dhlab.DHRobot([dhlab.RevoluteDH(a=0.1, alpha=dhlab.deg2rad(30))] * n, name=f"{n}-joint chain")
 
 
 def numeric_error(robot, T, trials=3):

@@ -1,6 +1,6 @@
 """dhlab: homogeneous transforms and the Denavit-Hartenberg convention, interactively.
 
-Angles are radians in the API (``deg(30)`` converts), lengths in the robot's unit.
+Angles are radians in the API (``deg2rad(30)`` converts), lengths in the robot's unit.
 
 >>> import dhlab
 >>> puma = dhlab.robots.puma560()
@@ -15,15 +15,17 @@ from .mdh import MDHRobot, PrismaticMDH, RevoluteMDH, to_modified, to_standard
 from .symbolic import compact, legend
 from .table import DHTable
 from .transforms import Rx, Ry, Rz, Tr, Tx, Tz, check_rigid, dh_matrix, inv, is_rigid, rpy, trans
-from .units import deg, rad
+from .i18n import get_language, set_language
+from .units import deg, deg2rad, rad, rad2deg
 from .validation import DHLabError
 
 __all__ = [
     "DHRobot", "RevoluteDH", "PrismaticDH", "Robot", "Link", "Rot", "Move", "DHTable",
     "Rx", "Ry", "Rz", "Tr", "trans", "Tx", "Tz", "dh_matrix", "inv", "is_rigid", "check_rigid", "rpy",
-    "deg", "rad", "compact", "legend", "DHLabError", "robots", "ik", "symbolic", "transforms",
+    "deg2rad", "rad2deg", "deg", "rad", "compact", "legend", "DHLabError", "robots", "ik", "symbolic", "transforms",
     "dh_from_axes", "dh_assignment", "joint_axes", "DHAssignment", "assign", "lines",
     "MDHRobot", "RevoluteMDH", "PrismaticMDH", "to_modified", "to_standard", "mdh",
+    "set_language", "get_language",
 ]
 __version__ = "0.1.0"
 

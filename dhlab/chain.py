@@ -74,7 +74,7 @@ class Factor:
         else:
             value = as_length(self.value, name + " (a length)", symbolic=True)
         keep = isinstance(value, sp.Basic) or not isinstance(self.value, Angle)
-        object.__setattr__(self, "value", value if keep else self.value)   # deg() values keep their repr
+        object.__setattr__(self, "value", value if keep else self.value)   # deg2rad() values keep their repr
 
     def matrix(self, q=0):
         """The 4x4 matrix of this motion; sympy (with exact constants) when ``q`` is a symbol."""
@@ -263,7 +263,7 @@ class Robot:
             angles = [s for s in names if isinstance(self.params[s], Angle)]
             if kind == "T" and angles:
                 raise DHLabError(f"{where} is a length, but parameter {angles[0]} = {self.params[angles[0]]!r} "
-                                 "is an angle (made by deg()): give it as a plain number.")
+                                 "is an angle (made by deg2rad()): give it as a plain number.")
             value = value.subs({s: self.params[str(s)] for s in value.free_symbols})
             where = f"link {link} ({factor}, {', '.join(names)} from params)"
         return as_angle(value, where) if kind == "R" else as_length(value, where)
@@ -476,7 +476,7 @@ def _numeric_params(params) -> dict:
             raise DHLabError(f"parameter {name} = {value!r} must be a finite number "
                              "(a length or an angle in radians).")
         number = as_number(value, f"parameter {name}")
-        out[name] = value if isinstance(value, Angle) else number   # deg() values stay marked as angles
+        out[name] = value if isinstance(value, Angle) else number   # deg2rad() values stay marked as angles
     return out
 
 

@@ -4,9 +4,9 @@ A DH link is a :class:`~dhlab.chain.Link` with exactly those four motions; the
 joint variable is added to θ (revolute) or to d (prismatic). Angles are radians:
 
 >>> import numpy as np
->>> from dhlab import DHRobot, RevoluteDH, deg
+>>> from dhlab import DHRobot, RevoluteDH, deg2rad
 >>> arm = DHRobot([RevoluteDH(a=1.0), RevoluteDH(a=0.5)], name="2R")
->>> arm.fk([deg(90), 0]).round(6)[:3, 3].tolist()
+>>> arm.fk([deg2rad(90), 0]).round(6)[:3, 3].tolist()
 [0.0, 1.5, 0.0]
 
 Tables typed from the slides (degrees, joint variables by name) go through
@@ -38,16 +38,16 @@ __all__ = ["RevoluteDH", "PrismaticDH", "DHRobot"]
 
 
 def _check_angle_param(value, name: str):
-    """A DH angle (θ, α, offset): radians or a sympy expression; kept as given (deg() keeps its mark)."""
+    """A DH angle (θ, α, offset): radians or a sympy expression; kept as given (deg2rad() keeps its mark)."""
     if isinstance(value, str):
-        raise DHLabError(f"{name} = {value!r} is text: pass a number of radians (e.g. dhlab.deg(90)) or a "
+        raise DHLabError(f"{name} = {value!r} is text: pass a number of radians (e.g. dhlab.deg2rad(90)) or a "
                          "sympy expression. Tables typed as text go through DHRobot.from_table.")
     checked = as_angle(value, name, symbolic=True)
     return checked if isinstance(checked, sp.Basic) or not isinstance(value, Angle) else value
 
 
 def _check_length_param(value, name: str):
-    """A DH length (d, a, offset): a number or a sympy expression, never a deg() value."""
+    """A DH length (d, a, offset): a number or a sympy expression, never a deg2rad() value."""
     if isinstance(value, str):
         raise DHLabError(f"{name} = {value!r} is text: pass a number or a sympy symbol, e.g. sympy.Symbol({value!r}) "
                          "with its value in the robot's params. Tables typed as text go through DHRobot.from_table.")
@@ -224,7 +224,7 @@ def _no_modified_links(links) -> None:
 
 
 def _no_marked_angles(params, angles: dict, i: int) -> None:
-    """In a table typed in degrees, a deg() parameter in θ or α would be converted twice."""
+    """In a table typed in degrees, a deg2rad() parameter in θ or α would be converted twice."""
     for col, expr in angles.items():
         for symbol in sorted(expr.free_symbols, key=str):
             value = params.get(str(symbol))
@@ -258,10 +258,10 @@ def _table_qlim(qlim, n: int) -> list:
 
 
 def _degrees_to_radians(limits, name: str) -> tuple:
-    """A revolute joint's limits typed in degrees, as radians (a deg() value here is ambiguous)."""
+    """A revolute joint's limits typed in degrees, as radians (a deg2rad() value here is ambiguous)."""
     if has_angle_mark(limits):
         raise DHLabError(f"{name}: the table's angles are degrees, so write the limits as plain degrees "
-                         f"(e.g. (-90, 90)), not with deg(); got {describe(limits)}.")
+                         f"(e.g. (-90, 90)), not with deg2rad(); got {describe(limits)}.")
     limits = as_sequence(limits, name, "two numbers (low, high)", size=2)
     return tuple(float(v) for v in np.radians([as_number(v, name) for v in limits]))
 
@@ -272,7 +272,7 @@ _TEXT = re.compile(r"[\w\s+\-*/().]*")
 def _parse(value, where: str, degrees: bool = False, length: bool = False):
     """A table entry as a sympy number or expression, checked (finite, real)."""
     if degrees and has_angle_mark(value):
-        raise DHLabError(f"{where} = {value!r} is already in radians (made by deg()), but this table's "
+        raise DHLabError(f"{where} = {value!r} is already in radians (made by deg2rad()), but this table's "
                          "angles are degrees: write the plain number of degrees (e.g. 90), or pass angles='rad'.")
     if length and has_angle_mark(value):
         raise DHLabError(f"{where} is a length, but you gave an angle ({describe(value)}): pass a plain number.")

@@ -34,7 +34,7 @@ def _lengths(**lengths) -> dict:
 
 
 def _link_length(value, name: str) -> float:
-    """A length of the robot's drawing (l1, d_max …): a number ≥ 0, read by as_length (a deg() angle is
+    """A length of the robot's drawing (l1, d_max …): a number ≥ 0, read by as_length (a deg2rad() angle is
     refused). A negative one is a mistake: where a seed's table needs −l2, the table writes the sign."""
     value = as_length(value, name)
     if value < 0:

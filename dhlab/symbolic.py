@@ -2,7 +2,7 @@
 
 Two ideas make the symbolic product both fast and compact:
 
-1. **Exact constants.** A twist of 90° typed as ``deg(90)`` is the float
+1. **Exact constants.** A twist of 90° typed as ``deg2rad(90)`` is the float
    1.5707963...; sympy would print ``6.1e-17`` for its cosine. :func:`exact`
    turns such floats back into ``pi/2`` (and lengths like 2.5 into 5/2).
 2. **No trigonometric simplification at all.** Joints whose axes are parallel

@@ -17,7 +17,7 @@ derivations and the numbers::
 With only numbers the result is a float numpy array; mixing it into a sympy
 product brings floats (1.0) in: keep at least one symbol, or use sympy numbers.
 
-Angles are radians (use ``dhlab.deg(30)`` for degrees). A numeric angle of
+Angles are radians (use ``dhlab.deg2rad(30)`` for degrees). A numeric angle of
 more than one full turn is refused: it is almost always degrees by mistake.
 
 Seed 000 names two products ``Tz[θ, z] = Rz(θ)·Tr(0,0,z)`` and

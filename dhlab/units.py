@@ -1,18 +1,19 @@
 """Angle units: the API works in radians; people read and type degrees.
 
-``deg(30)`` converts degrees to radians *and remembers that the value is an
-angle*, so that passing it to a prismatic joint (which expects a length) is
+Each name says its direction: ``deg2rad`` (degrees to radians) and ``rad2deg``
+(radians to degrees), as in numpy. ``deg2rad(30)`` converts degrees to radians *and
+remembers that the value is an angle*, so that passing it to a prismatic joint (which expects a length) is
 caught instead of silently moving the joint by 0.52 length units. The mark
-survives the arithmetic of angles: ``-deg(30)``, ``2 * deg(30)``,
-``deg(30) + 0.1`` are angles too.
+survives the arithmetic of angles: ``-deg2rad(30)``, ``2 * deg2rad(30)``,
+``deg2rad(30) + 0.1`` are angles too.
 
->>> from dhlab import deg, rad
->>> round(deg(90), 6)
+>>> from dhlab import deg2rad, rad2deg
+>>> round(deg2rad(90), 6)
 1.570796
->>> rad(deg(45))
+>>> rad2deg(deg2rad(45))
 45.0
->>> -deg(30)
-deg(-30)
+>>> -deg2rad(30)
+deg2rad(-30)
 """
 from __future__ import annotations
 
@@ -21,7 +22,7 @@ import math
 import numpy as np
 import sympy as sp
 
-__all__ = ["deg", "rad", "Angle", "AngleArray", "is_angle", "has_angle_mark"]
+__all__ = ["deg2rad", "rad2deg", "deg", "rad", "Angle", "AngleArray", "is_angle", "has_angle_mark"]
 
 
 def _is_real_scalar(x) -> bool:
@@ -29,10 +30,10 @@ def _is_real_scalar(x) -> bool:
 
 
 class Angle(float):
-    """A float in radians that was made from degrees by :func:`deg`."""
+    """A float in radians that was made from degrees by :func:`deg2rad`."""
 
     def __repr__(self) -> str:
-        return f"deg({math.degrees(self):g})"
+        return f"deg2rad({math.degrees(self):g})"
 
     # the arithmetic of angles keeps the mark: -θ, 2θ, θ/2, θ ± a number
     def __neg__(self):
@@ -69,19 +70,19 @@ class Angle(float):
 
 
 class AngleArray(np.ndarray):
-    """An array in radians that was made from degrees by :func:`deg`."""
+    """An array in radians that was made from degrees by :func:`deg2rad`."""
 
     def __array_finalize__(self, obj):  # keep the subclass through views and arithmetic
         pass
 
 
 def is_angle(x) -> bool:
-    """True when ``x`` was made by :func:`deg` (so it is an angle, not a length)."""
+    """True when ``x`` was made by :func:`deg2rad` (so it is an angle, not a length)."""
     return isinstance(x, (Angle, AngleArray))
 
 
 def has_angle_mark(x) -> bool:
-    """True when ``x`` or anything inside it (lists, tuples, object arrays) was made by :func:`deg`."""
+    """True when ``x`` or anything inside it (lists, tuples, object arrays) was made by :func:`deg2rad`."""
     if isinstance(x, (Angle, AngleArray)):
         return True
     if isinstance(x, (list, tuple)):
@@ -119,33 +120,52 @@ def _degrees_in(x, what: str, full_turn: float):
     return values
 
 
-def deg(x):
+def deg2rad(x):
     """Degrees -> radians. Scalars give an :class:`Angle`, sequences an :class:`AngleArray`;
     a sympy expression with symbols gives the exact ``x·π/180``.
 
-    >>> deg([0, 90, 180]).round(4).tolist()
+    >>> deg2rad([0, 90, 180]).round(4).tolist()
     [0.0, 1.5708, 3.1416]
     """
     if isinstance(x, sp.Expr) and x.free_symbols:
         return x * sp.pi / 180
     if has_angle_mark(x):
-        raise _error(f"deg(x): x = {_short(x)} is already in radians (it was made by deg()): "
+        raise _error(f"deg2rad(x): x = {_short(x)} is already in radians (it was made by deg2rad()): "
                      "do not convert twice, use the value as it is.")
-    values = _degrees_in(x, "deg(x): x (degrees)", 360.0)
+    values = _degrees_in(x, "deg2rad(x): x (degrees)", 360.0)
     if values.ndim == 0:
         return Angle(math.radians(float(values)))
     return np.radians(values).view(AngleArray)
 
 
-def rad(x):
-    """Radians -> degrees (plain floats or arrays: the inverse of :func:`deg`);
+def rad2deg(x):
+    """Radians -> degrees (plain floats or arrays: the inverse of :func:`deg2rad`);
     a sympy expression with symbols gives the exact ``x·180/π``.
 
-    >>> rad(np.pi)
+    >>> rad2deg(np.pi)
     180.0
     """
     if isinstance(x, sp.Expr) and x.free_symbols:
         return x * 180 / sp.pi
-    values = _degrees_in(x, "rad(x): x (radians)", 2 * math.pi)
+    values = _degrees_in(x, "rad2deg(x): x (radians)", 2 * math.pi)
     degrees = math.degrees(float(values)) if values.ndim == 0 else np.degrees(np.asarray(values, dtype=float))
     return float(degrees) if values.ndim == 0 else degrees
+
+
+def _renamed(old: str, new):
+    """``old`` kept working for one release, with a message that names the new function."""
+    import functools
+    import warnings
+
+    @functools.wraps(new)
+    def old_name(x):
+        warnings.warn(f"dhlab.{old}() is renamed dhlab.{new.__name__}() (the name says the direction); "
+                      f"{old}() will be removed in the next release.", FutureWarning, stacklevel=2)
+        return new(x)
+    old_name.__name__ = old
+    old_name.__qualname__ = old
+    return old_name
+
+
+deg = _renamed("deg", deg2rad)      # deprecated: degrees -> radians
+rad = _renamed("rad", rad2deg)      # deprecated: radians -> degrees

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from dhlab import DHLabError, DHRobot, PrismaticDH, RevoluteDH, deg, robots
+from dhlab import DHLabError, DHRobot, PrismaticDH, RevoluteDH, deg2rad, robots
 from dhlab.assign import dh_assignment, dh_from_axes, joint_axes
 from dhlab.transforms import Rx, trans
 
@@ -459,9 +459,9 @@ def test_bad_options_found_by_the_sweep(options, message):
 
 def test_a_prismatic_joints_limits_made_with_deg_are_refused():
     axes = [((0, 0, 0), (0, 0, 1), "R"), ((1, 0, 0), (1, 0, 0), "P")]
-    with pytest.raises(DHLabError, match=r"qlim\[1\] \(joint 2, prismatic\).*deg\(\)"):
-        dh_from_axes(axes, (2, 0, 0), qlim=[(-1, 1), (0.0, deg(30))])
-    assert dh_from_axes(axes, (2, 0, 0), qlim=[(deg(-90), deg(90)), (0.0, 0.5)]).qlim[1].tolist() == [0.0, 0.5]
+    with pytest.raises(DHLabError, match=r"qlim\[1\] \(joint 2, prismatic\).*deg2rad\(\)"):
+        dh_from_axes(axes, (2, 0, 0), qlim=[(-1, 1), (0.0, deg2rad(30))])
+    assert dh_from_axes(axes, (2, 0, 0), qlim=[(deg2rad(-90), deg2rad(90)), (0.0, 0.5)]).qlim[1].tolist() == [0.0, 0.5]
 
 
 def test_huge_coordinates_are_refused_and_huge_directions_normalised():

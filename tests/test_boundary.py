@@ -3,7 +3,7 @@
 Hypothesis draws values of every kind a student or a script can pass by mistake —
 None, True, text, complex numbers, Decimals, dates, huge integers, nan and inf,
 sympy's nan/zoo/I and symbols, ragged and nested lists, numpy arrays of every
-dtype (masked, complex, boolean, dates), deg() values — alone or mixed with good
+dtype (masked, complex, boolean, dates), deg2rad() values — alone or mixed with good
 values. Every call must either raise :class:`dhlab.DHLabError` or return a result
 that passes a check of its own (right shape, finite, rigid …). Any other
 exception, or a numpy warning (turned into an error here), fails the test.
@@ -20,7 +20,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import dhlab
-from dhlab import DHLabError, deg, rad, robots
+from dhlab import DHLabError, deg2rad, rad2deg, robots
 from dhlab.chain import Link, Move, Robot, Rot
 from dhlab.transforms import Rx, Ry, Rz, Tx, Tz, dh_matrix, inv, is_rigid, rpy, trans
 
@@ -30,7 +30,7 @@ FAST = settings(max_examples=30, deadline=None, suppress_health_check=list(Healt
 finite = st.floats(-10, 10, allow_nan=False)
 numbers = st.one_of(
     finite, st.integers(-10, 10), st.floats(allow_nan=True, allow_infinity=True),
-    st.integers(min_value=-10**400, max_value=10**400), st.just(deg(30)), st.just(-deg(45)),
+    st.integers(min_value=-10**400, max_value=10**400), st.just(deg2rad(30)), st.just(-deg2rad(45)),
     st.sampled_from([np.float32(0.5), np.int64(2), np.float64(np.nan), Fraction(1, 3), Decimal("0.25"),
                      Decimal("NaN"), sp.Integer(500), sp.Float(90), sp.Rational(1, 2), sp.pi / 4]),
 )
@@ -53,7 +53,7 @@ def arrays_of(shape):
         good.map(lambda a: np.ma.array(a, mask=np.zeros(a.shape, bool) | (a > 5))),
         good.map(lambda a: a.astype(object)),
         good.map(lambda a: np.array(a, dtype="datetime64[s]") if a.size else a),
-        good.map(deg),
+        good.map(deg2rad),
         good.map(lambda a: np.where(a > 5, np.nan, a)),
     )
 
@@ -64,7 +64,7 @@ def vectors(n):
         st.lists(scalars, min_size=max(n - 1, 0), max_size=n + 1),
         st.lists(st.lists(finite, min_size=n, max_size=n), min_size=0, max_size=3),
         st.lists(st.lists(scalars, min_size=n, max_size=n), min_size=1, max_size=2),
-        st.lists(st.one_of(finite, st.just(deg(10))), min_size=n, max_size=n).map(np.array),
+        st.lists(st.one_of(finite, st.just(deg2rad(10))), min_size=n, max_size=n).map(np.array),
         arrays_of((n,)), arrays_of((2, n)), arrays_of((0, n)), scalars,
     )
 
@@ -100,7 +100,7 @@ def assert_pose(T):
 @FAST
 @given(st.one_of(scalars, st.lists(scalars, max_size=3), st.lists(st.lists(finite, max_size=2), max_size=3)))
 def test_deg_and_rad(x):
-    for fn in (deg, rad):
+    for fn in (deg2rad, rad2deg):
         out = outcome(fn, x)
         if out is not None and not isinstance(out, sp.Basic):
             assert np.isfinite(out).all()
@@ -283,12 +283,12 @@ def test_joint_axes_and_tables(robot, data):
 def test_a_long_chain_is_fast_and_bounded():
     """Item 3 of issue 14: long general chains symbolically, in seconds (speed is measured in
     benchmarks/bench_symbolic.py); simplify stops with a clear DHLabError when its time runs out."""
-    chain = dhlab.DHRobot([dhlab.RevoluteDH(a=0.1, alpha=deg(30))] * 7)
+    chain = dhlab.DHRobot([dhlab.RevoluteDH(a=0.1, alpha=deg2rad(30))] * 7)
     q = np.linspace(-1, 1, chain.n)
     for T in (chain.fk_sym(), chain.fk_sym(simplify=True)):
         f = sp.lambdify(chain.q_symbols, T, cse=True)
         np.testing.assert_allclose(np.array(f(*q), dtype=float), chain.fk(q), atol=1e-9)
-    long_chain = dhlab.DHRobot([dhlab.RevoluteDH(a=0.1, alpha=deg(30))] * 12)
+    long_chain = dhlab.DHRobot([dhlab.RevoluteDH(a=0.1, alpha=deg2rad(30))] * 12)
     assert long_chain.fk_sym().shape == (4, 4)
     with pytest.raises(DHLabError, match="ran out of time.*timeout"):
         long_chain.fk_sym(simplify=True, timeout=1e-9)

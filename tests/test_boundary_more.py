@@ -10,7 +10,7 @@ import sympy as sp
 matplotlib.use("Agg")
 
 import dhlab  # noqa: E402
-from dhlab import DHLabError, deg, rad, robots  # noqa: E402
+from dhlab import DHLabError, deg2rad, rad2deg, robots  # noqa: E402
 from dhlab.dh import DHRobot, RevoluteDH  # noqa: E402
 from dhlab.lines import Line, closest_points, relation  # noqa: E402
 from dhlab.symbolic import compact, legend  # noqa: E402
@@ -56,7 +56,7 @@ def test_fk_sym_timeout_too_short_for_the_blocks_stops():
 def test_from_table_degrees_beyond_a_full_turn(row, words):
     with pytest.raises(DHLabError, match=words) as error:
         DHRobot.from_table([row])
-    assert "more than a full turn" in str(error.value) and "deg(" not in str(error.value)
+    assert "more than a full turn" in str(error.value) and "deg2rad(" not in str(error.value)
 
 
 def test_from_table_degrees_within_a_turn_still_work():
@@ -65,22 +65,22 @@ def test_from_table_degrees_within_a_turn_still_work():
 
 
 # --- units.py -------------------------------------------------------------------------------------------
-@pytest.mark.parametrize("value", [deg(30), -deg(30), 2 * deg(10), deg([10, 20]), [deg(10), 1.0]])
+@pytest.mark.parametrize("value", [deg2rad(30), -deg2rad(30), 2 * deg2rad(10), deg2rad([10, 20]), [deg2rad(10), 1.0]])
 def test_deg_of_a_deg_value_is_refused(value):
-    with pytest.raises(DHLabError, match=r"deg\(x\): x .*already in radians"):
-        deg(value)
+    with pytest.raises(DHLabError, match=r"deg2rad\(x\): x .*already in radians"):
+        deg2rad(value)
 
 
 @pytest.mark.parametrize("value", [1e308, -1e308, [0.0, 1e308]])
 def test_rad_refuses_an_infinite_result(value):
     with pytest.raises(DHLabError, match=r"rad\(x\): x .*too large"):
-        rad(value)
+        rad2deg(value)
 
 
 def test_deg_and_rad_still_convert():
-    assert rad(deg(45)) == pytest.approx(45.0)
-    assert isinstance(rad(1.0), float) and rad(np.pi) == 180.0
-    assert rad([np.pi, 0]).tolist() == [180.0, 0.0]
+    assert rad2deg(deg2rad(45)) == pytest.approx(45.0)
+    assert isinstance(rad2deg(1.0), float) and rad2deg(np.pi) == 180.0
+    assert rad2deg([np.pi, 0]).tolist() == [180.0, 0.0]
 
 
 # --- transforms.py --------------------------------------------------------------------------------------
@@ -144,7 +144,7 @@ def test_a_huge_direction_is_scaled_first():
                                            (robots.prr_example_matrices, "l2"), (robots.seed003_6dof, "l1")])
 def test_factory_lengths_refuse_deg_values(factory, name):
     with pytest.raises(DHLabError, match=f"^{name} is a length"):
-        factory(**{name: deg(30)})
+        factory(**{name: deg2rad(30)})
 
 
 def test_factory_lengths_still_accept_numbers():

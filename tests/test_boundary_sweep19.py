@@ -5,7 +5,7 @@ called with hostile values one argument at a time (the others good).
 Each call must end in a result or a :class:`dhlab.DHLabError`: no other exception, no numpy or sympy
 warning, no hang (20 s). A student's answer to an exercise must always come back as feedback (never an
 exception, never "correct" for junk). ``MUST_REFUSE`` lists the nonsense this sweep found accepted (a
-negative link length, a deg() value as a length, a set as an ordered pair, a masked value read as 0,
+negative link length, a deg2rad() value as a length, a set as an ordered pair, a masked value read as 0,
 a robot without DH frames in a DH check …): each must now be a DHLabError.
 
 Unlike tests/test_hostile_sweep.py (which checks each result's value too), this sweep is about
@@ -55,7 +55,7 @@ HOSTILE = [
     ("Decimal", Decimal("0.5")), ("Decimal sNaN", Decimal("sNaN")), ("Decimal inf", Decimal("Infinity")),
     ("Fraction", Fraction(1, 3)), ("{}", {}), ("{1: 2}", {1: 2}), ("set", {1, 2}), ("generator", "GENERATOR"),
     ("-5", -5), ("90", 90), ("10**400", 10**400), ("np.longdouble 1e400", np.longdouble("1e400")),
-    ("uint64 max", np.uint64(2**64 - 1)), ("deg(30)", dhlab.deg(30)), ("masked", np.ma.masked),
+    ("uint64 max", np.uint64(2**64 - 1)), ("deg2rad(30)", dhlab.deg2rad(30)), ("masked", np.ma.masked),
     ("date", datetime.date(2020, 1, 1)), ("object()", object()), ("Ellipsis", ...), ("sp.true", sp.true),
     ("Eq(x, 1)", sp.Eq(X, 1)), ("np.eye(4)", np.eye(4)), ("4x4 of NaN objects", np.full((4, 4), np.nan, dtype=object)),
     ("str subclass", type("Text", (str,), {})("q1")), ("np.str_", np.str_("1")), ("range", range(3)),
@@ -117,8 +117,8 @@ def maths_entries():
         ("inv", {"T": np.eye(4)}, dhlab.inv),
         ("rpy", {"T": np.eye(4)}, dhlab.rpy),
         ("position", {"T": np.eye(4)}, transforms.position),
-        ("deg", {"x": 1}, dhlab.deg),
-        ("rad", {"x": 1}, dhlab.rad),
+        ("deg", {"x": 1}, dhlab.deg2rad),
+        ("rad", {"x": 1}, dhlab.rad2deg),
         ("compact", {"M": dhlab.Rz(Q1) * dhlab.Rz(Q2), "q": (Q1, Q2)}, lambda M, q: dhlab.compact(M, q)),
         ("legend", {"M": dhlab.Rz(Q1) * dhlab.Rz(Q2), "q": (Q1, Q2)}, lambda M, q: dhlab.legend(M, q)),
         ("exact", {"x": 0.5}, symbolic.exact_angle),
@@ -296,9 +296,9 @@ MUST_REFUSE = [
     ("robots.seed002_6dof(l2=-2)", lambda: robots.seed002_6dof(l2=-2), "l2"),
     ("robots.robot_no_tan_elemental_1(l1=-1)", lambda: robots.robot_no_tan_elemental_1(l1=-1), "l1"),
     ("robots.rrr_example_matrices(l3=-1)", lambda: robots.rrr_example_matrices(l3=-1), "l3"),
-    # from_table: a deg() angle as a length; a set (no order) or a 0-d array as the pair of limits
-    ("from_table d = deg(30)", lambda: DHRobot.from_table([("q1", dhlab.deg(30), 1, 0)]), "length"),
-    ("from_table a = deg(30)", lambda: DHRobot.from_table([("q1", 0, dhlab.deg(30), 0)]), "length"),
+    # from_table: a deg2rad() angle as a length; a set (no order) or a 0-d array as the pair of limits
+    ("from_table d = deg2rad(30)", lambda: DHRobot.from_table([("q1", dhlab.deg2rad(30), 1, 0)]), "length"),
+    ("from_table a = deg2rad(30)", lambda: DHRobot.from_table([("q1", 0, dhlab.deg2rad(30), 0)]), "length"),
     ("from_table qlim = [{-90, 90}]", lambda: DHRobot.from_table([("q1", 0, 1, 0)], qlim=[{-90, 90}]), "set"),
     ("from_table qlim = 0-d array", lambda: DHRobot.from_table([("q1", 0, 1, 0)], qlim=np.array(5.0)), "qlim"),
     ("from_table rows = a set", lambda: DHRobot.from_table({("q1", 0, 1, 0), ("q2", 0, 1, 0)}), "set"),
@@ -306,8 +306,8 @@ MUST_REFUSE = [
     ("to_modified_rows(np.eye(4))", lambda: to_modified_rows(np.eye(4)), "joint variable"),
     ("to_standard_rows(NaN)", lambda: to_standard_rows([("q1", float("nan"), 0, 0)]), "row 1"),
     # units: more than 100 turns is no angle
-    ("deg(1e308)", lambda: dhlab.deg(1e308), "turns"),
-    ("rad(np.uint64 max)", lambda: dhlab.rad(np.uint64(2**64 - 1)), "turns"),
+    ("deg2rad(1e308)", lambda: dhlab.deg2rad(1e308), "turns"),
+    ("rad2deg(np.uint64 max)", lambda: dhlab.rad2deg(np.uint64(2**64 - 1)), "turns"),
     # symbolic display: a complex, masked or empty M
     ("compact(1j)", lambda: dhlab.compact(1j, ["q1"]), "complex"),
     ("compact(I*q1)", lambda: dhlab.compact(sp.Matrix([[sp.I * Q1]]), ["q1"]), "real"),
@@ -349,7 +349,7 @@ def test_nonsense_is_refused(label, call, word):
 
 def test_the_good_values_next_to_them_still_work():
     assert robots.prr_example(l1=0).n == 3 and robots.pr_mechanism(l2=0.5).n == 2
-    assert dhlab.deg(720) == pytest.approx(4 * np.pi) and dhlab.rad(-4 * np.pi) == pytest.approx(-720)
+    assert dhlab.deg2rad(720) == pytest.approx(4 * np.pi) and dhlab.rad2deg(-4 * np.pi) == pytest.approx(-720)
     assert DHRobot.from_table([("q1", 0, 1, 0)], qlim=[(-90, 90)]).qlim[0, 1] == pytest.approx(np.pi / 2)
     assert D.check_wrist_centre((1, 2, 3), robot=robots.puma560()).status == "wrong"
     assert E.check_value([1, 2], [1, 2], components="xy").status == "correct"

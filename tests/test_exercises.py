@@ -6,7 +6,7 @@ import pytest
 import sympy as sp
 
 import dhlab
-from dhlab import deg
+from dhlab import deg2rad
 from dhlab.course.exercises import (Exercise, Feedback, _seed000_DefinirTHz, available, check_choice, check_function,
                              check_matrix, check_solutions, check_terms, check_value, exercise,
                              seed001_DefinirTHz)
@@ -139,7 +139,7 @@ def test_many_wrong_entries_are_summarised():
 # --- check_value -----------------------------------------------------------------------------------
 def test_value_right_rounded_and_symbolic():
     assert check_value(0.5236, math.pi / 6, unit="rad").ok
-    assert check_value(deg(30), math.pi / 6, unit="rad").ok
+    assert check_value(deg2rad(30), math.pi / 6, unit="rad").ok
     assert check_value(sp.pi / 6, math.pi / 6).ok
     l, d = sp.symbols("l d")
     assert check_value([l + d, 0], [d + l, 0]).ok
@@ -148,7 +148,7 @@ def test_value_right_rounded_and_symbolic():
 
 def test_value_mistakes():
     fb = check_value(30, math.pi / 6, name="θ", unit="rad")
-    assert "which is the angle in degrees: the API takes radians. Write deg(30)" in text(fb)
+    assert "which is the angle in degrees: the API takes radians. Write deg2rad(30)" in text(fb)
     fb = check_value(math.pi / 6, 30, name="θ", unit="°")
     assert "which is the angle in radians: here it is asked in degrees." in text(fb)
     assert "the sign is wrong" in text(check_value(-0.5, 0.5))
@@ -234,13 +234,13 @@ def right_answers(cases):
         return M
 
     return {
-        "1.1": deg([45, -90]),
+        "1.1": deg2rad([45, -90]),
         "1.2": {"eslabón": "link", "articulación": "joint", "efector final": "end effector",
                 "dextrógiro": "right-handed", "grados de libertad": "degrees of freedom"},
         "1.3": "blue",
         "2.1": sp.Matrix([[sp.cos(TH), -sp.sin(TH), 0, 0], [sp.sin(TH), sp.cos(TH), 0, 0],
                           [0, 0, 1, 0], [0, 0, 0, 1]]),
-        "2.2": dhlab.Tz(deg(30), 0) @ dhlab.Tx(0, 2),
+        "2.2": dhlab.Tz(deg2rad(30), 0) @ dhlab.Tx(0, 2),
         "2.3": np.linalg.inv(trans(1, 2, 0) @ Rz(math.pi / 2)),
         "2.4": fixed_DefinirTHz,
         "3.1": robot1.A(1),
@@ -248,13 +248,13 @@ def right_answers(cases):
                             dhlab.Link([dhlab.Rot("z", joint=True), dhlab.Move("x", L2)])],
                            params={"l1": 0.7, "l2": 0.3}, joint_symbols=("theta0", "theta1")).fk_sym(),
         "3.3": extra["expected_position"],
-        "3.4": [deg(45), 0.6 * math.sqrt(2) - 0.70],
-        "4.1": pr.fk([0.5, deg(60)])[:2, 3],
+        "3.4": [deg2rad(45), 0.6 * math.sqrt(2) - 0.70],
+        "4.1": pr.fk([0.5, deg2rad(60)])[:2, 3],
         "4.2": list(dhlab.ik.pr_mechanism_ik(pr, 1.8, 0.3)),
         "4.3": [len(dhlab.ik.pr_mechanism_ik(pr, x, y)) for x, y in ((1.5, -0.5), (1.5, 0.7), (2.5, 0.1))],
-        "4.4": dhlab.robots.rrr_example().fk(deg([90, 30, 60]))[:3, 3],
+        "4.4": dhlab.robots.rrr_example().fk(deg2rad([90, 30, 60]))[:3, 3],
         "3.5": dhlab.robots.robot_no_tan_elemental_2().fk([-math.pi / 2, 0.30])[:3, 3],
-        "2.5": (dhlab.Rz(deg(90)) @ dhlab.trans(1, 0, 0))[:3, 3],
+        "2.5": (dhlab.Rz(deg2rad(90)) @ dhlab.trans(1, 0, 0))[:3, 3],
         "4.5": "branch " + "AB"[int(pr.qlim[0][0] <= dhlab.ik.pr_mechanism_ik(pr, 1.2, 0.25)[1][0] <= pr.qlim[0][1])],
     }
 
@@ -292,7 +292,7 @@ def only_d_fixed(dtheta, d):
 
 MISTAKES = [
     ("1.1", [45, -90], "θ1: you gave -90, which is the angle in degrees"),
-    ("1.1", deg([-90, 45]), "in the wrong order"),
+    ("1.1", deg2rad([-90, 45]), "in the wrong order"),
     ("1.3", "green", "green is the y axis."),
     ("2.1", Rz(-TH), "the transpose of the right one"),
     ("2.1", Rx(TH), "that is the rotation about x"),

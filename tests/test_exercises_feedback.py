@@ -10,7 +10,7 @@ import sympy as sp
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from dhlab import deg
+from dhlab import deg2rad
 from dhlab.course.exercises import available, check_matrix, check_solutions, check_value, exercise
 from dhlab.transforms import Rz, trans
 
@@ -140,7 +140,7 @@ HOSTILE = [np.nan, np.inf, -np.inf, 1j, [np.arcsin(2.0), 0], [np.nan, 0, 0], [np
            sp.eye(4) / sp.cos(sp.pi / 2), sp.Matrix([[sp.zoo] * 4] * 4), sp.Matrix(4, 4, [x] * 16),
            np.array(["a"] * 16).reshape(4, 4), [[None] * 4] * 4, [[True] * 4] * 4, lambda *a: 1 / 0,
            lambda *a: "text", lambda *a: None, lambda *a: np.full((4, 4), np.nan), print, sp.S.ComplexInfinity,
-           sp.Symbol("q") ** 10 ** 5, [deg(30), "30°"], np.datetime64("2024-01-01"), slice(1, 2), Ellipsis]
+           sp.Symbol("q") ** 10 ** 5, [deg2rad(30), "30°"], np.datetime64("2024-01-01"), slice(1, 2), Ellipsis]
 
 
 @pytest.mark.filterwarnings("ignore")

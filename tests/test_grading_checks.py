@@ -293,8 +293,8 @@ def test_only_the_seeds_form_of_transformation_is_allowed():
     with pytest.raises(DHLabError, match="cannot be multiplied"):
         A.Tz(2 * q1, 0)
     with pytest.raises(DHLabError, match="length"):
-        A.Tz(q1, dhlab.deg(90))
-    T = A.Tz(q2 + dhlab.deg(90), 0) @ A.Tx(dhlab.deg(-90), 0.1)      # deg() values are read as degrees
+        A.Tz(q1, dhlab.deg2rad(90))
+    T = A.Tz(q2 + dhlab.deg2rad(90), 0) @ A.Tx(dhlab.deg2rad(-90), 0.1)      # deg2rad() values are read as degrees
     assert repr(T) == "Tz[q2 + 90, 0]·Tx[-90°, 0.1]"
     sym = T.matrix()
     assert sym.free_symbols and str(sym[2, 3]) == "0"
@@ -623,8 +623,8 @@ def test_numbers_of_every_type_are_read_the_same_way():
     odd["link_points"][2] = np.array(lp[2])
     odd["link_points"][3] = [sp.Matrix(p) for p in lp[3]]
     odd["link_points"][4] = [tuple(sp.Float(v) for v in p) for p in lp[4]]
-    odd["T1"] = A.Tz(q1, 0) @ A.Tx(dhlab.deg(90), 0)
-    odd["T2"] = A.Tz(q2 + dhlab.deg(0), 0) @ A.Tx(0, np.float64(0.4318))
+    odd["T1"] = A.Tz(q1, 0) @ A.Tx(dhlab.deg2rad(90), 0)
+    odd["T2"] = A.Tz(q2 + dhlab.deg2rad(0), 0) @ A.Tx(0, np.float64(0.4318))
     odd["T4"] = A.Tz(q4, np.float32(0.4318)) @ A.Tx(sp.Integer(90), 0)
     odd["chain"] = _chain(odd)
     read = ans.answers_from_namespace(odd)

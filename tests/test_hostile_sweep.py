@@ -6,7 +6,7 @@ every argument of it in turn, every hostile value of that argument's kind — Na
 None, text, True, complex, huge numbers, dates, masked values, sympy symbols and ``zoo``,
 containers where a number is expected, numbers where a container is expected, lists of the
 wrong length, ragged and nested lists, numpy arrays of the wrong shape or dtype (object,
-complex, bool, text, dates), degrees where radians are expected (90 for an angle), deg()
+complex, bool, text, dates), degrees where radians are expected (90 for an angle), deg2rad()
 values where lengths are expected, empty tables — with the other arguments good.
 
 Each call must end in one of two ways:
@@ -37,7 +37,7 @@ import pytest
 import sympy as sp
 
 import dhlab
-from dhlab import DHLabError, deg, robots
+from dhlab import DHLabError, deg2rad, robots
 from dhlab.chain import Link, Move, Robot, Rot
 from dhlab.lines import Line, closest_points, relation
 
@@ -81,9 +81,9 @@ def _scalar_junk():
 SYMBOLS = [("Symbol x", X, False), ("x + 1", X + 1, False), ("Symbol q1", sp.Symbol("q1"), False)]
 ANGLE_JUNK = [("90 (degrees?)", 90, True), ("-180 (degrees?)", -180.0, True), ("360 (degrees?)", 360, True),
               ("sp.Integer(500)", sp.Integer(500), True), ("sp.Float(90)", sp.Float(90), True),
-              ("1e308", 1e308, True), ("-1e308", -1e308, True), ("deg(30)", deg(30), False),
-              ("-deg(45)", -deg(45), False), ("deg(400)", deg(400), True)]
-LENGTH_JUNK = [("deg(30)", deg(30), True), ("-deg(30)", -deg(30), True), ("2*deg(10)", 2 * deg(10), True),
+              ("1e308", 1e308, True), ("-1e308", -1e308, True), ("deg2rad(30)", deg2rad(30), False),
+              ("-deg2rad(45)", -deg2rad(45), False), ("deg2rad(400)", deg2rad(400), True)]
+LENGTH_JUNK = [("deg2rad(30)", deg2rad(30), True), ("-deg2rad(30)", -deg2rad(30), True), ("2*deg2rad(10)", 2 * deg2rad(10), True),
                ("1e308", 1e308, False), ("-1e308", -1e308, False), ("1e300", 1e300, False), ("1000", 1000, False)]
 TEXT_JUNK = [("None", None, True), ("5", 5, True), ("b'x'", b"x", True), ("['a']", ["a"], True),
              ("nan", float("nan"), True)]
@@ -139,16 +139,16 @@ def q_junk(robot):
         j = revolute[0]
         out += [("90 on a revolute joint", _with(zeros, j, 90.0), True),
                 ("1e308 on a revolute joint", _with(zeros, j, 1e308), True),
-                ("deg(30) on a revolute joint", _with(zeros, j, deg(30)), False),
+                ("deg2rad(30) on a revolute joint", _with(zeros, j, deg2rad(30)), False),
                 ("sp.Integer(500) on a revolute joint", _with(zeros, j, sp.Integer(500)), True),
-                ("deg() array", deg(np.zeros(n)) if not prismatic else np.zeros(n), False)]
+                ("deg2rad() array", deg2rad(np.zeros(n)) if not prismatic else np.zeros(n), False)]
     if prismatic:
         j = prismatic[0]
-        out += [("deg(10) on a prismatic joint", _with(zeros, j, deg(10)), True),
-                ("-deg(10) on a prismatic joint", _with(zeros, j, -deg(10)), True),
-                ("deg(10) in an object array", np.array(_with(zeros, j, deg(10)), dtype=object), True),
-                ("deg(10) in a batch", [zeros, _with(zeros, j, deg(10))], True),
-                ("deg() array on a prismatic robot", deg(np.zeros(n)), True),
+        out += [("deg2rad(10) on a prismatic joint", _with(zeros, j, deg2rad(10)), True),
+                ("-deg2rad(10) on a prismatic joint", _with(zeros, j, -deg2rad(10)), True),
+                ("deg2rad(10) in an object array", np.array(_with(zeros, j, deg2rad(10)), dtype=object), True),
+                ("deg2rad(10) in a batch", [zeros, _with(zeros, j, deg2rad(10))], True),
+                ("deg2rad() array on a prismatic robot", deg2rad(np.zeros(n)), True),
                 ("np.radians(10) on a prismatic joint", np.array(_with(zeros, j, float(np.radians(10)))), True),
                 ("1e308 on a prismatic joint", _with(zeros, j, 1e308), False),
                 ("1e200 on a prismatic joint", _with(zeros, j, 1e200), False)]
@@ -225,9 +225,9 @@ def qlim_junk(revolute: bool):
            ("(0, 1) ints", (0, 1), False), ("(-0.5, sp.Rational(1, 2))", (-0.5, sp.Rational(1, 2)), False)]
     if revolute:
         out += [("(-100, 100) rad", (-100, 100), True), ("(-180, 180) degrees?", (-180, 180), True),
-                ("(deg(-90), deg(90))", (deg(-90), deg(90)), False), ("deg([-90, 90])", deg([-90, 90]), False)]
+                ("(deg2rad(-90), deg2rad(90))", (deg2rad(-90), deg2rad(90)), False), ("deg2rad([-90, 90])", deg2rad([-90, 90]), False)]
     else:
-        out += [("(deg(-90), deg(90))", (deg(-90), deg(90)), True), ("deg([0, 30])", deg([0, 30]), True),
+        out += [("(deg2rad(-90), deg2rad(90))", (deg2rad(-90), deg2rad(90)), True), ("deg2rad([0, 30])", deg2rad([0, 30]), True),
                 ("(0, 1e308)", (0, 1e308), False), ("(0, 1e200)", (0, 1e200), False)]
     return out
 
@@ -377,12 +377,12 @@ def transform_calls():
                 args[slot] = value
                 out.append(Call(fn.__name__, slot, label, (lambda a=args, f=fn: f(**a)), (slot,), refuse,
                                 (lambda r, a=args, c=check: c(r, a))))
-    for fn in (dhlab.deg, dhlab.rad):
+    for fn in (dhlab.deg2rad, dhlab.rad2deg):
         for label, value, refuse in _scalar_junk() + SYMBOLS + LENGTH_JUNK + [
                 ("ragged", [[1, 2], [3]], True), ("nested ok", [[1, 2], [3, 4]], False),
                 ("None in list", [1, None], True),
                 ("complex array", np.array([1j]), True), ("masked", np.ma.array([1.0, 2], mask=[0, 1]), True)]:
-            if fn is dhlab.rad and label.startswith(("deg(", "-deg(", "2*deg")):
+            if fn is dhlab.rad2deg and label.startswith(("deg2rad(", "-deg2rad(", "2*deg")):
                 refuse = False
             out.append(Call(fn.__name__, "x", label, (lambda f=fn, v=value: f(v)), ("x",),
                             refuse and label not in ("[]", "[[]]", "np.array([1., 2.])", "sp.Matrix([1, 2])", "1e308",
@@ -416,7 +416,7 @@ def _unit_check(fn, value, result):
         plain = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
         return None
-    expected = np.radians(plain) if fn is dhlab.deg else np.degrees(plain)
+    expected = np.radians(plain) if fn is dhlab.deg2rad else np.degrees(plain)
     return None if np.allclose(np.asarray(result, dtype=float), expected) else f"is not {fn.__name__} of {plain}"
 
 
@@ -504,7 +504,7 @@ SYMBOLS_JUNK = [("5", 5, True), ("'q1'", "q1", True), ("one name", ["q1"], True)
 
 def robot_calls():
     out = []
-    good_links = [dhlab.RevoluteDH(a=sp.Symbol("l1")), dhlab.PrismaticDH(alpha=deg(90))]
+    good_links = [dhlab.RevoluteDH(a=sp.Symbol("l1")), dhlab.PrismaticDH(alpha=deg2rad(90))]
     links_junk = [("None", None, True), ("[]", [], True), ("[None]", [None], True),
                   ("[RevoluteDH(), 5]", [dhlab.RevoluteDH(), 5], True), ("'RR'", "RR", True),
                   ("one link, not a list", dhlab.RevoluteDH(), True),
@@ -532,7 +532,7 @@ def robot_calls():
         ("True a", [("q1", 0, True, 0)], True),
         ("'1/0'", [("q1", 0, "1/0", 0)], True), ("'1e400'", [("q1", 0, "1e400", 0)], True),
         ("nan a", [("q1", 0, float("nan"), 0)], True), ("inf α", [("q1", 0, 1, float("inf"))], True),
-        ("deg(90) α in degrees", [("q1", 0, 1, deg(90))], True), ("1e308 α", [("q1", 0, 1, 1e308)], True),
+        ("deg2rad(90) α in degrees", [("q1", 0, 1, deg2rad(90))], True), ("1e308 α", [("q1", 0, 1, 1e308)], True),
         ("720 α", [("q1", 0, 1, 720)], True), ("two symbols", [("q1", "q2", 1, 0)], True),
         ("q1 twice", [("q1", 0, 1, 0), ("q1", 0, 1, 0)], True), ("no joint variable", [(0, 0, 1, 0)], True),
         ("'__import__'", [("__import__('os')", 0, 1, 0)], True), ("'q1*q1'", [("q1*q1", 0, 1, 0)], True),
@@ -550,7 +550,7 @@ def robot_calls():
     table_qlim = [(lbl, [v], r) for lbl, v, r in qlim_junk(True) if "deg" not in lbl and "rad" not in lbl
                   and "degrees" not in lbl]
     table_qlim += [("(-180, 180) degrees", [(-180, 180)], False), ("(-720, 720) degrees", [(-720, 720)], True),
-                   ("(deg(-90), deg(90)) in a degree table", [(deg(-90), deg(90))], True), ("[]", [], True),
+                   ("(deg2rad(-90), deg2rad(90)) in a degree table", [(deg2rad(-90), deg2rad(90))], True), ("[]", [], True),
                    ("None per row", [None], False), ("two for one row", [(0, 1), (0, 1)], True)]
     slots = {"rows": (rows_junk, ("row", "table", "q1", "θ", "joint variable", "link 1")),
              "angles": (CHOICE_JUNK + [("'degrees'", "degrees", True), ("'RAD'", "RAD", True)], ("angles",)),
@@ -675,7 +675,7 @@ def assign_calls():
         ("an entry that is a string", ["abc"], True), ("dict", {"a": 1}, True), ("a robot", robots.puma560(), True),
         ("1e308 point", [((1e308, 0, 0), (0, 0, 1), "R")], True), ("1e308 direction", [((0, 0, 0),
         (0, 0, 1e308), "R")], False),
-        ("deg() direction", [((0, 0, 0), deg([0, 0, 90]), "R")], False),
+        ("deg2rad() direction", [((0, 0, 0), deg2rad([0, 0, 90]), "R")], False),
         ("np arrays", [(np.zeros(3), np.array([0, 0, 1.0]), "R")], False),
         ("sympy numbers", [((0, 0, 0), (0, 0, sp.Integer(1)), "R")], False), ("x in a point", [((X, 0, 0),
         (0, 0, 1), "R")], True),
@@ -697,7 +697,7 @@ def assign_calls():
                   ("[(nan, 1)] * 2", [(float("nan"), 1)] * 2, True), ("[None, None]", [None, None], True),
                   ("[('0', '1')] * 2", [("0", "1")] * 2, True), ("[(True, 2)] * 2", [(True, 2)] * 2, True),
                   ("[(0, 1+1j)] * 2", [(0, 1 + 1j)] * 2, True), ("{}", {}, True),
-                  ("[(deg(-90), deg(90))] * 2", [(deg(-90), deg(90))] * 2, False)], ("qlim",)),
+                  ("[(deg2rad(-90), deg2rad(90))] * 2", [(deg2rad(-90), deg2rad(90))] * 2, False)], ("qlim",)),
         "name": (TEXT_JUNK, ("name",)), "unit": (TEXT_JUNK, ("unit",)),
         "joint_symbols": ([(lbl, v, r and lbl != "['l1', 'q2']") for lbl, v, r in SYMBOLS_JUNK], ("joint_symbols",)),
     }
@@ -743,7 +743,7 @@ def ik_and_lines_calls():
                         ("tol",), refuse and label != "0", (lambda r: _ik_check(pr, {"x": 1.2, "y": 0.2}, r))))
     for label, value, refuse in [("nan", float("nan"), True), ("'1'", "1", True), ("None", None, True),
                                  ("1e308", 1e308, True),
-                                 ("deg(30)", deg(30), True), ("1j", 1j, True), ("x", X, True), ("0.2", 0.2, False)]:
+                                 ("deg2rad(30)", deg2rad(30), True), ("1j", 1j, True), ("x", X, True), ("0.2", 0.2, False)]:
         out.append(Call("ik.pr_mechanism_ik_explained", "y", label,
                         (lambda v=value: dhlab.ik.pr_mechanism_ik_explained(pr, 1.2, v)), ("y",), refuse,
                         lambda r: None if isinstance(r, str) and "nan" not in r else "no text, or nan in it"))
@@ -758,7 +758,7 @@ def ik_and_lines_calls():
                         ("pr_mechanism", "P-R", "l1", "l2", "robot"), refuse, None))
     vec_junk = [(lbl, v, True) for lbl, v, _ in _scalar_junk() if lbl != "[0.5]"] + [
         ("(1, 2)", (1, 2), True), ("(1, 2, 3, 4)", (1, 2, 3, 4), True), ("nan inside", (0, float("nan"), 1), True),
-        ("[[1, 2, 3]]", [[1, 2, 3]], True), ("text", ("1", "2", "3"), True), ("deg() vector", deg([0, 0, 90]), False),
+        ("[[1, 2, 3]]", [[1, 2, 3]], True), ("text", ("1", "2", "3"), True), ("deg2rad() vector", deg2rad([0, 0, 90]), False),
         ("sympy vector", sp.Matrix([0, 0, 1]), False), ("1e308 inside", (1e308, 0, 1), False)]
     for slot in ("point", "direction"):
         for label, value, refuse in vec_junk:
@@ -840,7 +840,7 @@ def view_calls():
             out.append(Call(name, "figsize", label, (lambda f=fn, v=value: f(puma, figsize=v)), ("figsize",),
                             refuse, None))
     for label, value, refuse in [("None", None, False), ("'abc'", "abc", True), ("[0.5]", [0.5], True),
-                                 ("deg() on the slider", [deg(10), deg(30)], True), ("nan", [float("nan"), 0.1], True)]:
+                                 ("deg2rad() on the slider", [deg2rad(10), deg2rad(30)], True), ("nan", [float("nan"), 0.1], True)]:
         out.append(Call("spaces", "q", label, (lambda v=value: dhlab.spaces(pr, v)), ("q",), refuse, None))
     for label, value, refuse in INDEX_JUNK:
         out.append(Call("stepthrough_link", "i", label, (lambda v=value: dhlab.stepthrough_link(puma, v)),

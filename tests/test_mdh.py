@@ -110,7 +110,7 @@ def test_typed_rows_convert_both_ways():
     standard = DHRobot.from_table(rows, params=params)
     modified_rows, (a_n, alpha_n) = to_modified_rows(rows)
     assert (a_n, alpha_n) == (0.1, 30)
-    modified = MDHRobot.from_table(modified_rows, params=params, tool=dhlab.trans(0.1, 0, 0) @ dhlab.Rx(dhlab.deg(30)))
+    modified = MDHRobot.from_table(modified_rows, params=params, tool=dhlab.trans(0.1, 0, 0) @ dhlab.Rx(dhlab.deg2rad(30)))
     Q = _poses(standard)
     np.testing.assert_allclose(modified.fk(Q), standard.fk(Q), atol=1e-9)
     back, leftover = to_standard_rows(modified_rows)
@@ -195,7 +195,7 @@ def test_bad_rows_are_refused(rows):
 
 
 @pytest.mark.parametrize("kwargs", [{"d": float("nan")}, {"a": "l1"}, {"alpha": 90}, {"offset": 1 + 2j},
-                                    {"a": dhlab.deg(30)}, {"qlim": (1, 0)}, {"d": None}])
+                                    {"a": dhlab.deg2rad(30)}, {"qlim": (1, 0)}, {"d": None}])
 def test_bad_link_parameters_are_refused(kwargs):
     with pytest.raises(DHLabError):
         RevoluteMDH(**kwargs)

@@ -98,7 +98,7 @@ def test_prismatic_joint_carriage_shows_the_joint_value():
 
 def test_gripper_points_along_the_approach_vector():
     robot = robots.ssrms()
-    view = robot_view(robot, dhlab.deg([10, 20, 30, 40, 50, 60, 70]))
+    view = robot_view(robot, dhlab.deg2rad([10, 20, 30, 40, 50, 60, 70]))
     g = view.shape.gripper
     end = view.frames[-1]
     stem = g[1] - g[0]

@@ -33,3 +33,16 @@ def test_notebook_kernels_use_private_unix_sockets():
         for km in (a, b):
             km.cleanup_resources()
     assert not os.path.exists(os.path.dirname(a.ip))
+
+
+def test_unit_helpers_say_their_direction_and_old_names_still_work_with_a_message():
+    import math
+
+    import pytest
+
+    assert math.isclose(dhlab.deg2rad(180), math.pi) and math.isclose(dhlab.rad2deg(math.pi), 180.0)
+    assert repr(-dhlab.deg2rad(30)) == "deg2rad(-30)"
+    with pytest.warns(FutureWarning, match=r"dhlab.deg\(\) is renamed dhlab.deg2rad\(\)"):
+        assert dhlab.deg(90) == dhlab.deg2rad(90)
+    with pytest.warns(FutureWarning, match=r"dhlab.rad\(\) is renamed dhlab.rad2deg\(\)"):
+        assert dhlab.rad(math.pi / 2) == dhlab.rad2deg(math.pi / 2)

@@ -40,7 +40,7 @@ def test_dh_params_round_trip_and_refuse_non_dh_links():
 
 def test_stepthrough_of_a_robot_link_goes_from_frame_i_minus_1_to_frame_i():
     robot = robots.ssrms()
-    q = dhlab.deg([10, 20, 30, 40, 50, 60, 70])
+    q = dhlab.deg2rad([10, 20, 30, 40, 50, 60, 70])
     F = robot.frames(q)
     for i in (1, 3, 5):
         panel = stepthrough_link(robot, i, q)

@@ -243,7 +243,7 @@ def test_spaces_and_stepthrough_pictures_at_the_notebooks_sizes(scale):
     from dhlab.views.stepthrough import stepthrough_link
 
     pr = robots.pr_mechanism()
-    panel = spaces(pr, ik=functools.partial(dhlab.ik.pr_mechanism_ik, pr), q=[0.566987, dhlab.deg(30)],
+    panel = spaces(pr, ik=functools.partial(dhlab.ik.pr_mechanism_ik, pr), q=[0.566987, dhlab.deg2rad(30)],
                    figsize=(7.8, 3.3), backend="image")
     panel.live.png()
     found = text_problems(panel.figure)

@@ -71,7 +71,7 @@ def test_G_a_changed_field_gives_a_dhlaberror_not_an_attributeerror():
 
 
 def test_G_every_accepted_answer_is_read_by_the_grader():
-    T = A.Tz(-q2 + 1e6, -1e6) @ A.Tx(dhlab.deg(-90), np.float32(0.5))
+    T = A.Tz(-q2 + 1e6, -1e6) @ A.Tx(dhlab.deg2rad(-90), np.float32(0.5))
     row = ans.answers_from_namespace({"T1": T}).T[0]
     assert isinstance(row, ans.Row)
     assert (row.theta.const, row.theta.sign, row.d.const, row.alpha, row.a) == (1e6, -1, -1e6, -90.0,
@@ -95,7 +95,7 @@ def test_H_joint_terms_are_checked(make, words):
 
 def test_H_valid_joint_term_arithmetic_is_unchanged():
     assert [repr(t) for t in (q2 + 90, -q1, 90 - q2, q1 * -1, -1 * q1, q1 * 1.0, q1 * sp.Integer(-1),
-                              q1 + dhlab.deg(90), q2 - 90)] == \
+                              q1 + dhlab.deg2rad(90), q2 - 90)] == \
         ["q2 + 90", "-q1", "-q2 + 90", "-q1", "-q1", "q1", "-q1", "q1 + 90", "q2 - 90"]
 
 
@@ -124,7 +124,7 @@ def test_I_valid_counts_and_parts_still_work():
     ([0.5], r"q = \[0.5\] is not a valid number"),
     (float("nan"), r"q is nan"),
     (float("inf"), r"q is inf"),
-    (90, r"q = 90 rad is more than a full turn.*deg\(90\)"),
+    (90, r"q = 90 rad is more than a full turn.*deg2rad\(90\)"),
     ("0.5", r"q = '0.5' .*text"),
     (True, r"q = True .*True/False"),
     (1j, r"q = 1j .*complex"),
@@ -137,14 +137,14 @@ def test_J_matrix_checks_the_joint_value(q, words):
 
 def test_J_a_sliding_joint_value_is_a_length():
     T = A.Tz(0, q1) @ A.Tx(0, 0)
-    _raises(lambda: T.matrix(dhlab.deg(30)), r"q is a length, but you gave an angle")
+    _raises(lambda: T.matrix(dhlab.deg2rad(30)), r"q is a length, but you gave an angle")
     assert T.matrix(2.0)[2, 3] == 2.0            # a length may be more than 2π
 
 
 def test_J_valid_values_still_give_the_pose():
     T = A.Tz(q1, 0.15005) @ A.Tx(-90, 0.0203)
     assert np.allclose(T.matrix(0)[:3, 3], [0.0203, 0, 0.15005])
-    assert np.allclose(T.matrix(dhlab.deg(90)), T.matrix(math.pi / 2))
+    assert np.allclose(T.matrix(dhlab.deg2rad(90)), T.matrix(math.pi / 2))
     assert np.allclose(T.matrix(np.float32(0.5)), T.matrix(0.5), atol=1e-7)
 
 
@@ -161,7 +161,7 @@ def test_J_valid_values_still_give_the_pose():
     ([[0, 0], [0, 0]], r"one pose, not a batch"),
     (["0", "0"], r"q\[0\] = '0' .*text"),
     ([True, False], r"q\[0\] = True"),
-    ([90, 0], r"q\[0\] \(joint 1, revolute\) is 90 rad.*deg\(90\)"),
+    ([90, 0], r"q\[0\] \(joint 1, revolute\) is 90 rad.*deg2rad\(90\)"),
 ], ids=["one-value", "empty", "three-values", "None", "nan", "text", "complex", "batch", "text-items",
         "bools", "degrees"])
 @pytest.mark.parametrize("method", ["frames", "matrix"])
@@ -172,10 +172,10 @@ def test_K_chain_checks_its_joint_vector(q, words, method):
 def test_K_valid_joint_vectors_still_work():
     ch = _chain()
     assert np.allclose(ch.frames([0.5, 0.0])[-1][:3, 3], [2 * math.cos(0.5), 2 * math.sin(0.5), 0])
-    assert np.allclose(ch.matrix([dhlab.deg(30), 0.1]), ch.frames(np.array([math.pi / 6, 0.1]))[-1])
+    assert np.allclose(ch.matrix([dhlab.deg2rad(30), 0.1]), ch.frames(np.array([math.pi / 6, 0.1]))[-1])
     sliding = (A.Tz(q1, 0) @ A.Tx(0, 1)) @ (A.Tz(0, q2) @ A.Tx(0, 0))
     assert sliding.frames([0.0, 3.0])[-1][2, 3] == 3.0
-    _raises(lambda: sliding.frames([0.0, dhlab.deg(30)]), r"q\[1\] = deg\(30\) is an angle, but joint 2 is prismatic")
+    _raises(lambda: sliding.frames([0.0, dhlab.deg2rad(30)]), r"q\[1\] = deg2rad\(30\) is an angle, but joint 2 is prismatic")
 
 
 def test_K_public_constructors_refuse_other_objects():

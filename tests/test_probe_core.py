@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from dhlab import DHLabError, Link, Move, PrismaticDH, RevoluteDH, Robot, Rot, deg, robots
+from dhlab import DHLabError, Link, Move, PrismaticDH, RevoluteDH, Robot, Rot, deg2rad, robots
 from dhlab.dh import DHRobot
 from dhlab.transforms import Rx, Rz, trans
 
@@ -37,8 +37,8 @@ BAD_Q = [
     ("Ellipsis", lambda: RevoluteDH().A(...), "an ellipsis"),
     ("huge Fraction", lambda: RevoluteDH().A(Fraction(10**400, 1)), "too large"),
     ("Decimal nan", lambda: RevoluteDH().A(Decimal("nan")), "nan"),
-    ("degrees as radians", lambda: RevoluteDH().A(90), "deg(90)"),
-    ("an angle as a length", lambda: PrismaticDH().A(deg(30)), "angle"),
+    ("degrees as radians", lambda: RevoluteDH().A(90), "deg2rad(90)"),
+    ("an angle as a length", lambda: PrismaticDH().A(deg2rad(30)), "angle"),
 ]
 
 
@@ -63,7 +63,7 @@ def test_link_A_stays_symbolic_for_a_symbol():      # a guard: symbolic q keeps 
 
 def test_link_A_offset_plus_q_beyond_a_turn_is_the_same_rotation():
     # each is within a turn; their sum is not, and is still a valid pose
-    np.testing.assert_allclose(RevoluteDH(offset=deg(90)).A(6.0), Rz(6.0 + np.pi / 2 - 2 * np.pi), atol=1e-12)
+    np.testing.assert_allclose(RevoluteDH(offset=deg2rad(90)).A(6.0), Rz(6.0 + np.pi / 2 - 2 * np.pi), atol=1e-12)
 
 
 # --- B: the sign of Rot / Move ------------------------------------------------------------------------
@@ -95,7 +95,7 @@ def test_sign_of_any_numeric_type_is_kept_as_an_int(sign):
 # --- C: values given in params go through the angle and length checks -----------------------------
 def test_params_angle_in_degrees_is_refused_with_the_fix():
     robot = lambda: DHRobot([RevoluteDH(a=1.0, alpha=sp.Symbol("al"))], params={"al": 90})  # noqa: E731
-    with pytest.raises(DHLabError, match=r"al from params.*more than a full turn.*deg\(90\)"):
+    with pytest.raises(DHLabError, match=r"al from params.*more than a full turn.*deg2rad\(90\)"):
         robot()
 
 
@@ -105,8 +105,8 @@ def test_params_huge_angle_is_refused():
 
 
 def test_params_angle_used_as_a_length_is_refused():
-    with pytest.raises(DHLabError, match=r"length.*l = deg\(30\)"):
-        DHRobot([RevoluteDH(a=sp.Symbol("l"))], params={"l": deg(30)})
+    with pytest.raises(DHLabError, match=r"length.*l = deg2rad\(30\)"):
+        DHRobot([RevoluteDH(a=sp.Symbol("l"))], params={"l": deg2rad(30)})
 
 
 def test_params_length_beyond_the_largest_is_refused():
@@ -114,10 +114,10 @@ def test_params_length_beyond_the_largest_is_refused():
         DHRobot([RevoluteDH(a=sp.Symbol("l"))], params={"l": 1e200})
 
 
-def test_params_good_values_still_work():      # a guard: deg() params now keep their mark
-    robot = DHRobot([RevoluteDH(a=sp.Symbol("l"), alpha=sp.Symbol("al"))], params={"l": 0.5, "al": deg(90)})
+def test_params_good_values_still_work():      # a guard: deg2rad() params now keep their mark
+    robot = DHRobot([RevoluteDH(a=sp.Symbol("l"), alpha=sp.Symbol("al"))], params={"l": 0.5, "al": deg2rad(90)})
     np.testing.assert_allclose(robot.fk([0.0]), trans(0.5, 0, 0) @ Rx(np.pi / 2), atol=1e-15)
-    assert robot.params == {"l": 0.5, "al": deg(90)}
+    assert robot.params == {"l": 0.5, "al": deg2rad(90)}
 
 
 # --- D: a ragged qlim ------------------------------------------------------------------------------------
@@ -162,9 +162,9 @@ def test_A_refuses_a_ragged_q_without_a_raw_error():
 
 
 def test_a_deg_parameter_in_a_degree_table_is_refused_not_converted_twice():
-    with pytest.raises(DHLabError, match=r"al = deg\(90\).*degrees.*al=90"):
-        DHRobot.from_table([("q1", 0, 1, "al")], params={"al": deg(90)})
+    with pytest.raises(DHLabError, match=r"al = deg2rad\(90\).*degrees.*al=90"):
+        DHRobot.from_table([("q1", 0, 1, "al")], params={"al": deg2rad(90)})
     by_degrees = DHRobot.from_table([("q1", 0, 1, "al")], params={"al": 90})
-    by_radians = DHRobot.from_table([("q1", 0, 1, "al")], params={"al": deg(90)}, angles="rad")
+    by_radians = DHRobot.from_table([("q1", 0, 1, "al")], params={"al": deg2rad(90)}, angles="rad")
     assert np.allclose(by_degrees.fk([0.0]), by_radians.fk([0.0]))
     assert np.allclose(by_degrees.fk([0.0])[:3, 2], [0, -1, 0])

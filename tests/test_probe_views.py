@@ -13,7 +13,7 @@ import pytest  # noqa: E402
 import sympy as sp  # noqa: E402
 
 import dhlab  # noqa: E402
-from dhlab import deg  # noqa: E402
+from dhlab import deg2rad  # noqa: E402
 
 DHLabError = dhlab.DHLabError
 
@@ -45,10 +45,10 @@ def test_stepthrough_takes_sympy_degrees():
 
 
 @pytest.mark.parametrize("options, match", [
-    (dict(d=deg(30)), r"d is a length, but you gave an angle"),                 # L3
-    (dict(a=deg(30)), r"a is a length, but you gave an angle"),
-    (dict(theta_deg=deg(90)), r"theta_deg = deg\(90\) is already in radians"),   # L4
-    (dict(alpha_deg=deg(90)), r"alpha_deg = deg\(90\) is already in radians"),
+    (dict(d=deg2rad(30)), r"d is a length, but you gave an angle"),                 # L3
+    (dict(a=deg2rad(30)), r"a is a length, but you gave an angle"),
+    (dict(theta_deg=deg2rad(90)), r"theta_deg = deg\(90\) is already in radians"),   # L4
+    (dict(alpha_deg=deg2rad(90)), r"alpha_deg = deg\(90\) is already in radians"),
     (dict(theta_deg=1e300), r"theta_deg = 1e\+300° is more than a full turn.*degrees"),   # L5
     (dict(alpha_deg=-400), r"alpha_deg = -400° is more than a full turn"),
     (dict(d=1e308), r"^d = 1e\+308 is too large for a length"),                 # L6
@@ -88,7 +88,7 @@ def spaces_panel(pr):
     (10**400, 0.2, r"target x = .* too large"),
     ("1.2", True, r"target x = '1.2' is not a valid number"),
     (1.2, True, r"target y = True is not a valid number"),
-    (1.2, deg(10), r"target y is a length, but you gave an angle"),
+    (1.2, deg2rad(10), r"target y is a length, but you gave an angle"),
     (float("nan"), 0.2, r"target x is nan"),
 ])
 def test_set_target_refuses_what_is_not_a_length(spaces_panel, x, y, match):
@@ -185,7 +185,7 @@ def test_update_draw_is_a_flag(puma):
 
 
 def test_robot_view_refuses_a_pose_outside_the_limits_as_teach_does(puma):
-    q = deg([0, 0, 0, 0, 0, 300])
+    q = deg2rad([0, 0, 0, 0, 0, 300])
     with pytest.raises(DHLabError) as refused_by_teach:
         dhlab.teach(puma, q, backend="image")
     with pytest.raises(DHLabError) as refused_by_view:
@@ -224,5 +224,5 @@ def test_stepthrough_link_refuses_a_pose_outside_the_joint_limits_as_teach_does(
     import dhlab
     puma = dhlab.robots.puma560()
     with pytest.raises(dhlab.DHLabError, match=r"q\[5\] = 300° is outside joint 6's limits"):
-        dhlab.stepthrough_link(puma, 1, dhlab.deg([0, 0, 0, 0, 0, 300]), backend="image")
-    dhlab.stepthrough_link(puma, 1, dhlab.deg([0, 0, 0, 0, 0, 30]), backend="image")
+        dhlab.stepthrough_link(puma, 1, dhlab.deg2rad([0, 0, 0, 0, 0, 300]), backend="image")
+    dhlab.stepthrough_link(puma, 1, dhlab.deg2rad([0, 0, 0, 0, 0, 30]), backend="image")

@@ -81,7 +81,7 @@ def test_set_q_moves_all_sliders_and_redraws_once():
     panel = teach(robot)
     calls = []
     panel.on_change = calls.append
-    q = dhlab.deg([10, 20, -30, 40, -50, 60])
+    q = dhlab.deg2rad([10, 20, -30, 40, -50, 60])
     panel.set_q(q)
     np.testing.assert_allclose(panel.q, q, atol=1e-12)
     assert len(calls) == 1
@@ -136,7 +136,7 @@ def test_callback_errors_are_shown_then_cleared():
 def test_bad_start_pose_gets_a_clear_error():
     with pytest.raises(ValueError, match=r"q must hold 7 joint values"):
         teach(robots.ssrms(), [0, 0])
-    with pytest.raises(ValueError, match=r"outside joint 2's limits.*dhlab.deg"):
+    with pytest.raises(ValueError, match=r"outside joint 2's limits.*dhlab.deg2rad"):
         teach(robots.robot_no_tan_elemental_2(), [0.0, 0.5])
 
 

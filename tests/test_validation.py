@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 
 import dhlab
-from dhlab import DHLabError, deg, robots
+from dhlab import DHLabError, deg2rad, robots
 from dhlab.transforms import Rz, inv, trans
 
 
@@ -39,26 +39,26 @@ def test_not_numbers(puma):
 
 
 def test_degrees_passed_as_radians_are_refused(puma):
-    with pytest.raises(DHLabError, match=r"joint 2, revolute\) is 90 rad.*dhlab.deg\(90\)"):
+    with pytest.raises(DHLabError, match=r"joint 2, revolute\) is 90 rad.*dhlab.deg2rad\(90\)"):
         puma.fk([0, 90, 0, 0, 0, 0])
-    with pytest.raises(DHLabError, match=r"dhlab.deg\(45\)"):
+    with pytest.raises(DHLabError, match=r"dhlab.deg2rad\(45\)"):
         Rz(45)
-    with pytest.raises(DHLabError, match=r"alpha = 90 rad is more than a full turn.*dhlab.deg\(90\)"):
+    with pytest.raises(DHLabError, match=r"alpha = 90 rad is more than a full turn.*dhlab.deg2rad\(90\)"):
         dhlab.RevoluteDH(alpha=90)
     # the same values in radians are fine
-    puma.fk(deg([0, 90, 0, 0, 0, 0]))
-    Rz(deg(45))
+    puma.fk(deg2rad([0, 90, 0, 0, 0, 0]))
+    Rz(deg2rad(45))
 
 
 def test_prismatic_joint_given_an_angle():
     robot = robots.seed002_4dof()
-    with pytest.raises(DHLabError, match=r"q\[1\] = deg\(30\) is an angle, but joint 2 is prismatic"):
-        robot.fk([deg(10), deg(30), 0.2, 0])
-    with pytest.raises(DHLabError, match="made with dhlab.deg\\(\\), but joint 2 is prismatic"):
-        robot.fk(deg([10, 30, 20, 0]))
+    with pytest.raises(DHLabError, match=r"q\[1\] = deg2rad\(30\) is an angle, but joint 2 is prismatic"):
+        robot.fk([deg2rad(10), deg2rad(30), 0.2, 0])
+    with pytest.raises(DHLabError, match="made with dhlab.deg2rad\\(\\), but joint 2 is prismatic"):
+        robot.fk(deg2rad([10, 30, 20, 0]))
     with pytest.raises(DHLabError, match="d is a length, but you gave an angle"):
-        dhlab.RevoluteDH(d=deg(30))
-    robot.fk([deg(10), 0.3, 0.2, deg(5)])   # the right way
+        dhlab.RevoluteDH(d=deg2rad(30))
+    robot.fk([deg2rad(10), 0.3, 0.2, deg2rad(5)])   # the right way
 
 
 def test_non_rigid_matrices():
@@ -128,7 +128,7 @@ ISSUE_14_REFUSED = {
     "reversed qlim": lambda: dhlab.RevoluteDH(qlim=(1, -1)),
     "infinite qlim": lambda: dhlab.RevoluteDH(qlim=(-1, np.inf)),
     "qlim of 100 rad": lambda: dhlab.RevoluteDH(qlim=(-100, 100)),
-    "deg() limit on a prismatic joint": lambda: dhlab.PrismaticDH(qlim=(0, deg(30))),
+    "deg2rad() limit on a prismatic joint": lambda: dhlab.PrismaticDH(qlim=(0, deg2rad(30))),
     "table with None": lambda: dhlab.DHRobot.from_table([("q1", None, 0, 0)]),
     "table with True": lambda: dhlab.DHRobot.from_table([("q1", True, 0, 0)]),
     "table with 1/0": lambda: dhlab.DHRobot.from_table([("q1", "1/0", 0, 0)]),
@@ -136,17 +136,17 @@ ISSUE_14_REFUSED = {
     "qlim=[]": lambda: dhlab.DHRobot.from_table([("q1", 0, 1, 0)], qlim=[]),
     "table of None": lambda: dhlab.DHRobot.from_table(None),
     "angles='rad' with 90": lambda: dhlab.DHRobot.from_table([("q1", 0, 1, 90)], angles="rad"),
-    "deg(90) in a degree table": lambda: dhlab.DHRobot.from_table([("q1", 0, 1, deg(90))]),
+    "deg2rad(90) in a degree table": lambda: dhlab.DHRobot.from_table([("q1", 0, 1, deg2rad(90))]),
     "q1 in two rows": lambda: dhlab.DHRobot.from_table([("q1", 0, 1, 0), ("q1", 0, 1, 0)]),
     "DHRobot(None)": lambda: dhlab.DHRobot(None),
     "params='abc'": lambda: dhlab.DHRobot([dhlab.RevoluteDH()], params="abc"),
     "joint_symbols=5": lambda: dhlab.DHRobot([dhlab.RevoluteDH()], joint_symbols=5),
     "same joint symbol twice": lambda: dhlab.DHRobot([dhlab.RevoluteDH()] * 2, joint_symbols=["q", "q"]),
     "symbolic base": lambda: dhlab.DHRobot([dhlab.RevoluteDH()], base=sp.eye(4) * sp.Symbol("x")),
-    "deg(None)": lambda: deg(None),
-    "deg('abc')": lambda: deg("abc"),
-    "ragged deg": lambda: deg([[1, 2], [3]]),
-    "ragged rad": lambda: dhlab.rad([[1, 2], [3]]),
+    "deg2rad(None)": lambda: deg2rad(None),
+    "deg2rad('abc')": lambda: deg2rad("abc"),
+    "ragged deg": lambda: deg2rad([[1, 2], [3]]),
+    "ragged rad": lambda: dhlab.rad2deg([[1, 2], [3]]),
     "compact of None": lambda: dhlab.compact(None, ["q1"]),
     "compact with unknown names": lambda: dhlab.compact(robots.puma560().fk_sym(), ["x"]),
     "DHTable(None)": lambda: dhlab.DHTable(None),
@@ -171,9 +171,9 @@ ISSUE_14_REFUSED = {
     "datetime array": lambda: robots.puma560().fk(np.zeros(6, dtype="datetime64[s]")),
     "masked values": lambda: robots.puma560().fk(np.ma.array(np.zeros(6), mask=[0, 0, 1, 0, 0, 0])),
     "text in trans": lambda: trans(sp.Symbol("x"), "y", 0),
-    "deg() inside a numpy array, prismatic": lambda: robots.seed002_4dof().fk(np.array([deg(10), deg(30), 0.2, 0])),
-    "negated deg(), prismatic": lambda: robots.seed002_4dof().fk([deg(10), -deg(30), 0.2, 0]),
-    "deg() in a nested batch, prismatic": lambda: robots.seed002_4dof().fk([[0, 0.1, 0.2, 0], [0, deg(3), 0, 0]]),
+    "deg2rad() inside a numpy array, prismatic": lambda: robots.seed002_4dof().fk(np.array([deg2rad(10), deg2rad(30), 0.2, 0])),
+    "negated deg2rad(), prismatic": lambda: robots.seed002_4dof().fk([deg2rad(10), -deg2rad(30), 0.2, 0]),
+    "deg2rad() in a nested batch, prismatic": lambda: robots.seed002_4dof().fk([[0, 0.1, 0.2, 0], [0, deg2rad(3), 0, 0]]),
     "fk_sym timeout of -1": lambda: robots.puma560().fk_sym(timeout=-1),
 }
 
@@ -188,8 +188,8 @@ def test_issue_14_reproducers_are_refused_clearly(case):
 def test_issue_14_what_is_right_still_works():
     puma = robots.puma560()
     assert puma.fk(np.zeros((0, 6))).shape == (0, 4, 4)                 # an empty batch: no poses
-    assert deg(sp.Symbol("x")) == sp.Symbol("x") * sp.pi / 180          # symbolic degrees stay exact
-    assert isinstance(-deg(30), type(deg(30))) and repr(-deg(30)) == "deg(-30)"
+    assert deg2rad(sp.Symbol("x")) == sp.Symbol("x") * sp.pi / 180          # symbolic degrees stay exact
+    assert isinstance(-deg2rad(30), type(deg2rad(30))) and repr(-deg2rad(30)) == "deg2rad(-30)"
     assert dhlab.compact(puma.fk_sym(simplify=True), ["q1", "q2", "q3"]).has(sp.Symbol("C1"))
     assert Rz(sp.pi / 2)[0, 1] == -1                                      # sympy numbers stay exact
     np.testing.assert_allclose(puma.A(2, np.array([0.3])), puma.A(2, 0.3))

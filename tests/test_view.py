@@ -80,16 +80,16 @@ def test_planar_view_draws_the_robot_frames(make):
 def test_seed004_second_case_on_the_figure():
     """Segundo caso (θ0 = −60°, θ1 = 90°): the end effector is drawn at (0.866025, 0.5)."""
     robot = robots.robot_no_tan_elemental_1()
-    view = robot_view(robot, dhlab.deg([-60, 90]))
+    view = robot_view(robot, dhlab.deg2rad([-60, 90]))
     np.testing.assert_allclose(drawn_2d(view.ee_marker)[0], [0.866025, 0.5], atol=1e-6)
     np.testing.assert_allclose(drawn_2d(view.link_line)[1], [0.606218, 0.35], atol=1e-6)
 
 
 def test_tool_frame_is_drawn_and_marked():
-    robot = dhlab.DHRobot([dhlab.RevoluteDH(a=1.0), dhlab.RevoluteDH(a=0.5, alpha=dhlab.deg(90))],
+    robot = dhlab.DHRobot([dhlab.RevoluteDH(a=1.0), dhlab.RevoluteDH(a=0.5, alpha=dhlab.deg2rad(90))],
                           tool=dhlab.trans(0, 0, 0.2), name="with tool")
     view = robot_view(robot, planar=False)
-    q = dhlab.deg([20, 40])
+    q = dhlab.deg2rad([20, 40])
     view.update(q)
     assert view.frame_labels[-1] == r"$\{E\}$" and len(view.frame_labels) == robot.n + 2
     np.testing.assert_allclose(drawn_3d(view.ee_marker)[0], robot.fk(q)[:3, 3], atol=1e-12)
@@ -199,7 +199,7 @@ def test_default_camera_reads_every_triad():
 
 def test_update_really_draws_and_leaves_no_trail():
     view = robot_view(robots.ssrms(), framing="fixed")
-    qa, qb = dhlab.deg([10, 20, 30, 0, 0, 0, 0]), dhlab.deg([-40, 60, 10, 20, 30, 0, 0])
+    qa, qb = dhlab.deg2rad([10, 20, 30, 0, 0, 0, 0]), dhlab.deg2rad([-40, 60, 10, 20, 30, 0, 0])
     view.update(qa)
     first = pixels(view)
     view.update(qb)
@@ -212,7 +212,7 @@ def test_blitted_frame_shows_the_robot_like_a_full_render():
     """What blitting paints equals a full redraw of the same figure, pixel for pixel
     except where the robot's strokes overlap the axes decorations' antialiasing."""
     view = robot_view(robots.puma560(), backend="image", framing="fixed")
-    view.update(dhlab.deg([30, -40, 20, 10, 50, 0]))
+    view.update(dhlab.deg2rad([30, -40, 20, 10, 50, 0]))
     blitted = pixels(view).astype(int)
     for artist in view.live.moving:
         artist.set_animated(False)
@@ -269,7 +269,7 @@ def test_ipympl_diff_frames_rebuild_the_picture():
     received = []
     canvas.send_binary = received.append
     screen = None
-    for q in (np.zeros(7), dhlab.deg([30, 0, 0, 0, 0, 0, 0]), dhlab.deg([30, 45, -20, 0, 0, 10, 0])):
+    for q in (np.zeros(7), dhlab.deg2rad([30, 0, 0, 0, 0, 0, 0]), dhlab.deg2rad([30, 45, -20, 0, 0, 10, 0])):
         view.update(q)
         frame = np.asarray(Image.open(BytesIO(received[-1])).convert("RGBA"))
         if canvas._current_image_mode == "full" or screen is None:

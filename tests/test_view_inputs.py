@@ -24,10 +24,10 @@ DHLabError = dhlab.DHLabError
 
 def test_every_panel_takes_the_robot_then_q():
     pr = robots.pr_mechanism()
-    panel = spaces(pr, [0.5, dhlab.deg(30)], backend="image")       # was "'list' object is not callable"
+    panel = spaces(pr, [0.5, dhlab.deg2rad(30)], backend="image")       # was "'list' object is not callable"
     np.testing.assert_allclose(panel.q, [0.5, np.radians(30)])
-    assert teach(pr, [0.5, dhlab.deg(30)], backend="image").q[0] == pytest.approx(0.5)
-    assert robot_view(pr, [0.5, dhlab.deg(30)], backend="image").q[0] == pytest.approx(0.5)
+    assert teach(pr, [0.5, dhlab.deg2rad(30)], backend="image").q[0] == pytest.approx(0.5)
+    assert robot_view(pr, [0.5, dhlab.deg2rad(30)], backend="image").q[0] == pytest.approx(0.5)
     with pytest.raises(DHLabError, match="ik="):                    # the old positional ik
         spaces(pr, functools.partial(dhlab.ik.pr_mechanism_ik, pr))
     with pytest.raises(TypeError):                                  # keyword-only options
@@ -69,7 +69,7 @@ def test_an_undrawable_prismatic_limit_is_refused():
 
 
 def test_a_robot_whose_origins_all_coincide_is_drawn():
-    robot = DHRobot([RevoluteDH(), RevoluteDH(alpha=dhlab.deg(90))])     # was "figure size (6, nan)"
+    robot = DHRobot([RevoluteDH(), RevoluteDH(alpha=dhlab.deg2rad(90))])     # was "figure size (6, nan)"
     panel = teach(robot, backend="image")
     assert panel.live.png()[:4] == b"\x89PNG"
     assert len(panel.view.labels.texts) == 1                          # one place, one label
@@ -96,7 +96,7 @@ def test_set_q_needs_every_joint():
         panel.set_q([0] * 5)                                          # moved 5 of 6 sliders
     assert [s.value for s in panel.sliders] == before
     with pytest.raises(DHLabError):
-        panel.set_q(dhlab.deg([0, 0, 0, 0, 0, 300]))                 # beyond joint 6 limits (±266°)
+        panel.set_q(dhlab.deg2rad([0, 0, 0, 0, 0, 300]))                 # beyond joint 6 limits (±266°)
     assert [s.value for s in panel.sliders] == before
 
 

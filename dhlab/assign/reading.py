@@ -118,14 +118,14 @@ def _read_qlim(qlim, kinds) -> list:
     for j, (limits, kind) in enumerate(zip(qlim, kinds)):
         if kind == "P" and has_angle_mark(limits):
             raise DHLabError(f"qlim[{j}] (joint {j + 1}, prismatic) is a range of lengths, but it was made with "
-                             f"deg(): give lengths, e.g. (0.0, 0.5); got {_short(limits)}.")
+                             f"deg2rad(): give lengths, e.g. (0.0, 0.5); got {_short(limits)}.")
         arr = as_float_array(limits, f"qlim[{j}]")
         if arr.shape != (2,) or not np.isfinite(arr).all() or not arr[0] < arr[1]:
             raise DHLabError(f"qlim[{j}] (joint {j + 1}) must be (low, high) with low < high, got {_short(limits)}.")
         if kind == "R" and np.abs(arr).max() > FULL_TURN + 1e-9:
             raise DHLabError(
                 f"qlim[{j}] (joint {j + 1}, revolute) is {arr.tolist()}: more than one full turn. Limits are "
-                f"radians: for degrees write dhlab.deg({arr[0]:g}), dhlab.deg({arr[1]:g})."
+                f"radians: for degrees write dhlab.deg2rad({arr[0]:g}), dhlab.deg2rad({arr[1]:g})."
             )
         out.append((float(arr[0]), float(arr[1])))
     return out

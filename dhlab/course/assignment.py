@@ -68,7 +68,7 @@ class JointTerm:
         if isinstance(number, JointTerm):
             raise DHLabError("θ_i holds one joint variable, q_i, plus a constant: "
                              f"{self!r} and {number!r} cannot be added.")
-        number = _inputs.degrees(number, f"the number added to {self!r}",     # a deg() value: back to degrees
+        number = _inputs.degrees(number, f"the number added to {self!r}",     # a deg2rad() value: back to degrees
                                  unit="angle (degrees) or length (metres)")
         return JointTerm(self.joint, self.sign, self.const + sign_of_number * number)
 

@@ -45,14 +45,14 @@ def constant(value, what: str, unit: str = "angle (degrees) or length (metres)")
 
 
 def degrees(value, what: str, unit: str = "angle (degrees)") -> float:
-    """A number typed in degrees (a value made by dhlab.deg() is converted back)."""
+    """A number typed in degrees (a value made by dhlab.deg2rad() is converted back)."""
     if is_angle(value):
         value = math.degrees(as_number(value, what))
     return constant(value, what, unit)
 
 
 def length(value, what: str) -> float:
-    """A length typed in metres (a value made by dhlab.deg() is an angle: refused)."""
+    """A length typed in metres (a value made by dhlab.deg2rad() is an angle: refused)."""
     if has_angle_mark(value):
         raise DHLabError(f"{what} is a length, but you gave an angle ({describe(value)}): give metres.")
     return constant(value, what, "length (metres)")

@@ -29,10 +29,10 @@ The course's exercises are made by :func:`exercise`:
 >>> ex = exercise("1.1")
 >>> ex.check([45, -90])
 ✗ Exercise 1.1: your q is not right yet.
-  • θ0: you gave 45, which is the angle in degrees: the API takes radians. Write deg(45) (or 45·π/180).
-  • θ1: you gave -90, which is the angle in degrees: the API takes radians. Write deg(-90) (or -90·π/180).
+  • θ0: you gave 45, which is the angle in degrees: the API takes radians. Write deg2rad(45) (or 45·π/180).
+  • θ1: you gave -90, which is the angle in degrees: the API takes radians. Write deg2rad(-90) (or -90·π/180).
   Stuck? Call .hint() on this exercise (2 hints).
->>> ex.check(deg([45, -90]))
+>>> ex.check(deg2rad([45, -90]))
 ✓ Exercise 1.1: correct: your q is right.
 """
 from __future__ import annotations
@@ -43,7 +43,7 @@ import numpy as np
 import sympy as sp
 
 from ..transforms import Rx, Ry, Rz, inv, trans
-from ..units import deg
+from ..units import deg2rad
 from ..validation import DHLabError, as_angle, as_vector, check_length_size
 from .feedback import NOT_ANSWERED, Exercise, Feedback
 from .matrix_checks import TRANSPOSED_ROTATION, check_function, check_matrix
@@ -64,7 +64,7 @@ TH, THETA0, THETA1, L1, L2 = sp.symbols("theta theta0 theta1 l1 l2")
 def _ex_1_1():
     return Exercise("1.1", "a joint vector for the API", lambda a: check_value(
         a, [math.radians(45), math.radians(-90)], name="your q", components=("θ0", "θ1"), unit="rad"),
-        ["The sliders show degrees; robot.fk takes radians: dhlab.deg converts (it also takes a list).",
+        ["The sliders show degrees; robot.fk takes radians: dhlab.deg2rad converts (it also takes a list).",
          "q lists the joints from the base: [θ0, θ1]."])
 
 
@@ -104,10 +104,10 @@ def _ex_2_2():
              "that is Tr(2,0,0)·Rz(30°): the move along the FIXED x0 axis (pre-multiplied, fixed-frame order). "
              "Moving along the new x axis means post-multiplying: Rz(30°)·Tr(2,0,0)."),
             (by_hand_in_degrees, "cos(30) and sin(30) were computed with 30 radians: "
-                                 "use the angle in radians, deg(30) = π/6."),
+                                 "use the angle in radians, deg2rad(30) = π/6."),
             (Rz(math.radians(30)), "that is only the rotation: the move of 2 along the new x is missing.")]),
         ["Moving frame: multiply on the right, in the order the motions happen.",
-         "Rz(deg(30)) @ trans(2, 0, 0): the new origin is 2·(cos 30°, sin 30°, 0)."])
+         "Rz(deg2rad(30)) @ trans(2, 0, 0): the new origin is 2·(cos 30°, sin 30°, 0)."])
 
 
 def _ex_2_3():
@@ -262,7 +262,7 @@ def _ex_3_3():
     return Exercise("3.3", "the pen at θ0 = 30°, θ1 = 45°", lambda a: check_value(
         a, _robot1_position(t0, t1), name="your pen position", components=("x", "y", "z"), unit="m",
         mistakes=[(_robot1_position(30, 45), "those are the values for θ0 = 30 rad and θ1 = 45 rad: "
-                                            "convert the angles, deg(30) and deg(45)."),
+                                            "convert the angles, deg2rad(30) and deg2rad(45)."),
                   (_robot1_position(t1, t0), "you swapped θ0 and θ1: θ0 = 30° is the base joint."),
                   (eq3[:3, 3], "that is the position with ⁰H₁ of eq. (3) as printed (erratum 004-1): "
                                "use ⁰H₁ = Rz(θ0)·Tr(0, l1, 0)."),
@@ -270,7 +270,7 @@ def _ex_3_3():
                    "that is the pen of the variant with link 1 along x0 (exercise 3.2). In seed 004's robot "
                    "link 1 lies along y0 at rest: ⁰H₁ = Rz(θ0)·Tr(0, l1, 0), so l1 contributes "
                    "(−l1·sin θ0, l1·cos θ0).")]),
-        ["robot.fk(deg([30, 45])) gives the whole pose; its last column is the position.",
+        ["robot.fk(deg2rad([30, 45])) gives the whole pose; its last column is the position.",
          "By the formula: x = l2·cos(θ0+θ1) − l1·sin θ0, y = l2·sin(θ0+θ1) + l1·cos θ0."])
 
 
@@ -282,7 +282,7 @@ def _ex_3_4():
         a, right, name="your (θ, d)", components=("θ", "d"), unit=("rad", "m"),
         mistakes=[([math.radians(45), reach], "d = 0.8485 is the whole distance l + d from the base: the "
                                               "fixed link l = 0.70 is not part of the joint value d."),
-                  ([45, reach - l], "θ = 45 is in degrees: the API takes radians, deg(45)."),
+                  ([45, reach - l], "θ = 45 is in degrees: the API takes radians, deg2rad(45)."),
                   ([-math.radians(45), reach - l], "with θ = −45° the pen goes to (+0.6, 0.6): x = −(l+d)·sin θ, "
                                                    "so x < 0 needs θ > 0 (counter-clockwise).")]),
         ["The pen is at (−(l+d)·sin θ, (l+d)·cos θ): its distance from the base is l + d.",
@@ -318,7 +318,7 @@ def _ex_4_1():
     q1, q2 = 0.5, math.radians(60)
     return Exercise("4.1", "forward kinematics of the P-R mechanism", lambda a: check_value(
         a, _pr_fk(q1, q2), name="your (x, y)", components=("x", "y"), mistakes=[
-            (_pr_fk(q1, 60), "that is q2 = 60 rad: the angle must be in radians, deg(60)."),
+            (_pr_fk(q1, 60), "that is q2 = 60 rad: the angle must be in radians, deg2rad(60)."),
             (_pr_fk(q1, q2) - [1.0, 0], "x is missing l1 = 1: the arm's joint sits at q1 + l1 along x."),
             ([q1 + 1.0 + 0.5 * math.sin(q2), 0.5 * math.cos(q2)], "cos and sin are swapped: q2 is measured "
                                                                     "from the x axis, so x gets l2·cos q2."),
@@ -406,7 +406,7 @@ def _ex_4_4():
     q = [math.radians(v) for v in (90, 30, 60)]
     return Exercise("4.4", "the 3R example by the geometric method", lambda a: check_value(
         a, _rrr_position(*q), name="your (x, y, z)", components=("x", "y", "z"), mistakes=[
-            (_rrr_position(90, 30, 60), "those are the formulas at 90, 30, 60 radians: convert, deg(...)."),
+            (_rrr_position(90, 30, 60), "those are the formulas at 90, 30, 60 radians: convert, deg2rad(...)."),
             (_rrr_position(q[0], q[1], q[1] + q[2]), "q3 is relative to link 2: the angle of link 3 is "
                                                       "q2 + q3 (use cos(q2 + q3), not cos(q2 + q2 + q3)).")]),
         ["r = l2·cos q2 + l3·cos(q2 + q3), then y = r·cos q1, z = r·sin q1.",

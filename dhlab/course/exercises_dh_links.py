@@ -79,7 +79,7 @@ WRIST_Q_DEG = (30, -45, 60, 90, -30, 45)
 def _degrees(q_deg, n: int) -> np.ndarray:
     """``q_deg``: n joint angles in degrees, as plain numbers of at most a full turn."""
     if has_angle_mark(q_deg):
-        raise DHLabError("q_deg is in degrees already: give plain numbers (30, not deg(30)).")
+        raise DHLabError("q_deg is in degrees already: give plain numbers (30, not deg2rad(30)).")
     values = as_vector(q_deg, "q_deg", n)
     if np.any(np.abs(values) > 360):
         raise DHLabError(f"q_deg holds joint angles in degrees, each at most 360 in size; got {values.tolist()}.")

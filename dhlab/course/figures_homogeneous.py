@@ -11,7 +11,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from ..transforms import Rx, Rz, trans
-from ..units import deg
+from ..units import deg2rad
 from ..views.figures import new_figure
 from .figures_common import AXIS_COLORS, LETTERS, label, triad
 
@@ -23,7 +23,7 @@ def two_steps(reading: str, angle_deg: float = 90.0, distance: float = 1.0) -> d
     ``{"start", "step 1", "step 2"}`` (4x4 each). ``reading`` is ``"moving"`` (the move follows the
     frame's own, turned x: post-multiply) or ``"fixed"`` (the move follows x₀: pre-multiply).
     Either way step 1 is the turn alone, in place."""
-    turn, move = Rz(deg(angle_deg)), trans(distance, 0, 0)
+    turn, move = Rz(deg2rad(angle_deg)), trans(distance, 0, 0)
     final = {"moving": lambda: turn @ move, "fixed": lambda: move @ turn}
     if reading not in final:
         raise ValueError(f"reading must be 'moving' or 'fixed', got {reading!r}")
@@ -132,7 +132,7 @@ def frame_panel(theta_deg=30.0, a=1.0, alpha_deg=45.0):
     panel = Panel(live, [*sliders, moving_html, fixed_html])
 
     def redraw():
-        th, a_, al = deg(sliders[0].value), sliders[1].value, deg(sliders[2].value)
+        th, a_, al = deg2rad(sliders[0].value), sliders[1].value, deg2rad(sliders[2].value)
         T_moving = Rz(th) @ trans(a_, 0, 0) @ Rx(al)
         T_fixed = Rx(al) @ trans(a_, 0, 0) @ Rz(th)
         for lines, T in ((solid, T_moving), (dashed, T_fixed)):

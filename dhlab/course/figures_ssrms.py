@@ -13,7 +13,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from ..transforms import Rx
-from ..units import deg
+from ..units import deg2rad
 from ..views.figures import new_figure
 from ..views.triads import free_direction
 from .figures_common import AXIS_COLORS, fit_box, label, triad
@@ -195,7 +195,7 @@ def links_figure(robot):
 def rot_x_figure():
     """y and z before and after Rot_x(−90°), seen from the tip of +x (x points at the reader):
     y turns clockwise onto −z, z onto +y. Returns the figure."""
-    R = np.asarray(Rx(deg(-90)), dtype=float)[:3, :3]
+    R = np.asarray(Rx(deg2rad(-90)), dtype=float)[:3, :3]
     fig = new_figure((5.6, 5.6))
     ax = fig.add_subplot()
     for k, (color, name) in ((1, (AXIS_COLORS[1], "y")), (2, (AXIS_COLORS[2], "z"))):

@@ -63,7 +63,7 @@ def _trig_in_degrees(M) -> list:
         arg = f.args[0]
         if not arg.free_symbols and arg.is_real and abs(float(arg)) > 2 * math.pi + 1e-9:
             found.append(f"{f} takes radians: {sp.sstr(arg)} rad is more than a full turn. If you meant "
-                         f"{sp.sstr(arg)}°, write sp.pi*{sp.sstr(arg)}/180 (or use dhlab.deg).")
+                         f"{sp.sstr(arg)}°, write sp.pi*{sp.sstr(arg)}/180 (or use dhlab.deg2rad).")
     return found
 
 

@@ -47,7 +47,7 @@ def check_value(student, expected, *, name: str = "your value", components=None,
 
     >>> check_value(math.degrees(0.5), 0.5, name="q2", unit="rad")
     ✗ q2 is not right yet.
-      • you gave 28.6479, which is the angle in degrees: the API takes radians. Write deg(28.6479) (or 28.6479·π/180).
+      • you gave 28.6479, which is the angle in degrees: the API takes radians. Write deg2rad(28.6479) (or 28.6479·π/180).
     """
     name, tol, mistakes = teacher.name(name), teacher.tolerance(tol), teacher.mistakes(mistakes)
     exp_exprs = teacher.expected_vector(expected)
@@ -117,7 +117,7 @@ def _number_problem(g, e, unit, tol, decimals=None) -> str:
     nonzero = not math.isclose(e, 0, abs_tol=1e-12)
     if unit == "rad" and nonzero and math.isclose(g, math.degrees(e), rel_tol=tol, abs_tol=tol):
         return (f"you gave {num(g)}, which is the angle in degrees: the API takes radians. "
-                f"Write deg({num(g)}) (or {num(g)}·π/180).")
+                f"Write deg2rad({num(g)}) (or {num(g)}·π/180).")
     if unit == "°" and nonzero and math.isclose(g, math.radians(e), rel_tol=tol, abs_tol=tol):
         return f"you gave {num(g)}, which is the angle in radians: here it is asked in degrees."
     if unit in ("rad", "°"):

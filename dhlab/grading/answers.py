@@ -150,7 +150,7 @@ def to_plain(value, _depth=0, _budget=None):
         return None
     if isinstance(value, bool):
         return bool(value)
-    # subclasses (numpy.float64, dhlab.deg() values, str subclasses) become the plain type, so
+    # subclasses (numpy.float64, dhlab.deg2rad() values, str subclasses) become the plain type, so
     # that every numeric type a student may use is read the same way
     if isinstance(value, int):
         value = int(value)

@@ -10,7 +10,7 @@ masked values are refused):
 
 * ``as_number(x, name)``         one finite real number, as a float
 * ``as_angle(x, name)``          radians, at most one full turn (more is degrees by mistake)
-* ``as_length(x, name)``         a length: refuses values made by ``deg()`` and sizes beyond
+* ``as_length(x, name)``         a length: refuses values made by ``deg2rad()`` and sizes beyond
   ``LARGEST_LENGTH`` (1e150, so that squares stay finite; ``check_length_size`` checks a size)
 * ``as_tolerance(x, name)``      a small positive number
 * ``as_index(x, name, lo, hi)``  a whole number lo … hi (``1.5``, ``'1'``, ``True`` refused)
@@ -26,14 +26,14 @@ Arrays and vectors:
 * ``as_vector(x, name, size)``               ``size`` finite numbers, shape (size,)
 * ``check_joint_values(q, links, name, single=False)``  joint values, (n,) or a batch
   (N, n); radians for revolute joints (at most a full turn), lengths for prismatic
-  ones (no ``deg()`` mark, at any depth); ``single=True`` refuses a batch
+  ones (no ``deg2rad()`` mark, at any depth); ``single=True`` refuses a batch
 * ``as_matrix4(T, name, batch=False)``       a finite float 4×4 (or (N, 4, 4))
 * ``as_sym_matrix4(T, name)``                a 4×4 as a sympy Matrix (numbers or symbols)
 * ``rigid_problem(T, tol)``                  why a float 4×4 is not a rigid transform, or None
 * ``as_qlim(qlim, revolute, name)``          one joint's (low, high)
 
 Options: ``as_choice(x, allowed, name)``, ``as_flag(x, name)``, ``as_text(x, name)``,
-``as_timeout(x, name)``; ``has_angle_mark(x)`` finds a ``deg()`` value at any depth;
+``as_timeout(x, name)``; ``has_angle_mark(x)`` finds a ``deg2rad()`` value at any depth;
 ``describe(x)`` is a short repr for messages.
 
 The checks live in three modules, one concept each — :mod:`dhlab.validation.values`
@@ -41,16 +41,16 @@ The checks live in three modules, one concept each — :mod:`dhlab.validation.va
 matrices), :mod:`dhlab.validation.joints` (joint values and limits) — and are
 imported from here.
 
->>> as_angle(deg(30), "theta")
+>>> as_angle(deg2rad(30), "theta")
 0.5235987755982988
 >>> as_angle(30, "theta")
 Traceback (most recent call last):
 ...
-dhlab.validation.DHLabError: theta = 30 rad is more than a full turn: angles are in radians. If you meant 30 degrees, pass dhlab.deg(30).
+dhlab.validation.DHLabError: theta = 30 rad is more than a full turn: angles are in radians. If you meant 30 degrees, pass dhlab.deg2rad(30).
 """
 from __future__ import annotations
 
-from ..units import Angle, AngleArray, deg, has_angle_mark  # noqa: F401 (deg: for the doctest)
+from ..units import Angle, AngleArray, deg2rad, has_angle_mark  # noqa: F401 (deg2rad: for the doctest)
 from .arrays import (_check_finite, _numpy_floats, _objects_floats, _sequence_floats,  # noqa: F401
                      as_float_array, as_sequence, as_matrix4, as_sym_matrix4, as_vector, rigid_problem)
 from .joints import (_angle_columns, _check_angle_marks, _check_not_radians,  # noqa: F401

@@ -1,17 +1,17 @@
 """Checks of joint values at the boundary: one pose or a batch, radians for revolute
 joints (at most a full turn: more is degrees by mistake), lengths for prismatic ones
-(no ``deg()`` mark, at any depth; at most ``LARGEST_LENGTH``), and each joint's limits.
+(no ``deg2rad()`` mark, at any depth; at most ``LARGEST_LENGTH``), and each joint's limits.
 
 Part of :mod:`dhlab.validation` (import from there).
 
 >>> from dhlab import PrismaticDH, RevoluteDH
 >>> links = [RevoluteDH(), PrismaticDH()]
->>> check_joint_values([deg(30), 0.2], links).round(4).tolist()
+>>> check_joint_values([deg2rad(30), 0.2], links).round(4).tolist()
 [0.5236, 0.2]
->>> check_joint_values([0.1, deg(30)], links)
+>>> check_joint_values([0.1, deg2rad(30)], links)
 Traceback (most recent call last):
 ...
-dhlab.validation.DHLabError: q[1] = deg(30) is an angle, but joint 2 is prismatic: give its displacement as a length (in the robot's unit).
+dhlab.validation.DHLabError: q[1] = deg2rad(30) is an angle, but joint 2 is prismatic: give its displacement as a length (in the robot's unit).
 """
 from __future__ import annotations
 
@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from ..units import Angle, AngleArray, deg, has_angle_mark  # noqa: F401 (deg: for the doctest)
+from ..units import Angle, AngleArray, deg2rad, has_angle_mark  # noqa: F401 (deg2rad: for the doctest)
 from .arrays import _check_finite, as_float_array
 from .values import FULL_TURN, DHLabError, as_angle, as_number, check_length_size, describe
 
@@ -33,8 +33,8 @@ def check_joint_values(q, links, name: str = "q", single: bool = False) -> np.nd
     """Joint values as a float array of shape (n,) or (N, n), checked against the links.
 
     Revolute values are radians; a value beyond one full turn is almost always
-    degrees typed by mistake, so it is refused with the fix (``dhlab.deg``).
-    A value made by ``deg()`` given to a prismatic joint (a length) is refused too,
+    degrees typed by mistake, so it is refused with the fix (``dhlab.deg2rad``).
+    A value made by ``deg2rad()`` given to a prismatic joint (a length) is refused too,
     wherever it sits (a list, a nested batch, a numpy array). ``single=True``
     refuses a batch where one pose is expected. A batch may be empty, (0, n).
     """
@@ -59,7 +59,7 @@ def check_joint_values(q, links, name: str = "q", single: bool = False) -> np.nd
             if value > FULL_TURN + 1e-9:
                 raise DHLabError(
                     f"{name}[{j}] (joint {j + 1}, revolute) is {value:g} rad, more than a full turn: "
-                    f"angles are in radians. If you meant {value:g} degrees, pass dhlab.deg({value:g})."
+                    f"angles are in radians. If you meant {value:g} degrees, pass dhlab.deg2rad({value:g})."
                 )
     for j in prismatic:
         column = arr[..., j]
@@ -69,7 +69,7 @@ def check_joint_values(q, links, name: str = "q", single: bool = False) -> np.nd
 
 
 def _angle_columns(q, n: int) -> set:
-    """The positions j (0 … n−1) whose value carries a deg() mark, at any depth of ``q``."""
+    """The positions j (0 … n−1) whose value carries a deg2rad() mark, at any depth of ``q``."""
     if isinstance(q, AngleArray):
         return set(range(n))
     if isinstance(q, Angle):
@@ -83,15 +83,15 @@ def _angle_columns(q, n: int) -> set:
 
 
 def _check_angle_marks(q, n: int, prismatic: list, name: str) -> None:
-    """Refuse deg() values given to prismatic joints."""
+    """Refuse deg2rad() values given to prismatic joints."""
     marked = _angle_columns(q, n) & set(prismatic)
     if not marked:
         return
     j = min(marked)
     if isinstance(q, AngleArray):
         raise DHLabError(
-            f"{name} was made with dhlab.deg(), but joint {j + 1} is prismatic: its value is a length, "
-            "not an angle. Convert only the revolute values, e.g. [deg(30), 0.5, deg(45)]."
+            f"{name} was made with dhlab.deg2rad(), but joint {j + 1} is prismatic: its value is a length, "
+            "not an angle. Convert only the revolute values, e.g. [deg2rad(30), 0.5, deg2rad(45)]."
         )
     shown = f" = {q[j]!r}" if isinstance(q, (list, tuple)) and len(q) == n else ""
     raise DHLabError(
@@ -102,13 +102,13 @@ def _check_angle_marks(q, n: int, prismatic: list, name: str) -> None:
 
 def _check_not_radians(column: np.ndarray, j: int, name: str) -> None:
     """A prismatic value equal, to the last bit, to a whole number of degrees in radians
-    (deg(30) = 0.5235987755982988) is an angle whose deg() mark numpy dropped."""
+    (deg2rad(30) = 0.5235987755982988) is an angle whose deg2rad() mark numpy dropped."""
     degrees = np.round(column * (180 / math.pi))
     hit = (degrees != 0) & (np.abs(degrees) <= 360) & (np.radians(degrees) == column)
     if hit.any():
         value = column[np.argmax(hit)] if column.ndim else column
         raise DHLabError(
-            f"{name}[{j}] = {float(value)!r} is exactly deg({float(np.degrees(value)):g}), an angle, but joint "
+            f"{name}[{j}] = {float(value)!r} is exactly deg2rad({float(np.degrees(value)):g}), an angle, but joint "
             f"{j + 1} is prismatic: give its displacement as a length (in the robot's unit)."
         )
 
@@ -118,13 +118,13 @@ def _check_not_radians(column: np.ndarray, j: int, name: str) -> None:
 # ------------------------------------------------------------------------------------------
 def as_qlim(qlim, revolute: bool, name: str = "qlim") -> tuple:
     """One joint's limits (low, high): finite, low < high; radians (at most a full turn
-    either way) for a revolute joint, lengths (no deg() mark, at most ``LARGEST_LENGTH``)
+    either way) for a revolute joint, lengths (no deg2rad() mark, at most ``LARGEST_LENGTH``)
     for a prismatic one."""
-    unit = "radians, e.g. (deg(-90), deg(90))" if revolute else "lengths, e.g. (0.0, 0.5)"
+    unit = "radians, e.g. (deg2rad(-90), deg2rad(90))" if revolute else "lengths, e.g. (0.0, 0.5)"
     if not _is_pair(qlim):
         raise DHLabError(f"{name} must be two numbers (low, high) in {unit}; got {describe(qlim)}.")
     if not revolute and has_angle_mark(qlim):
-        raise DHLabError(f"{name} of a prismatic joint is a range of lengths, but it was made with deg(): "
+        raise DHLabError(f"{name} of a prismatic joint is a range of lengths, but it was made with deg2rad(): "
                          f"give lengths, e.g. (0.0, 0.5); got {describe(qlim)}.")
     low, high = (as_number(v, f"{name}[{k}]") for k, v in enumerate(qlim))
     if not low < high:

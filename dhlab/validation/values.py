@@ -7,10 +7,10 @@ masked values are refused with the fix for their type. Part of :mod:`dhlab.valid
 
 >>> as_number(np.float32(0.5), "x")
 0.5
->>> as_length(deg(30), "d")
+>>> as_length(deg2rad(30), "d")
 Traceback (most recent call last):
 ...
-dhlab.validation.DHLabError: d is a length, but you gave an angle (deg(30)): pass a plain number.
+dhlab.validation.DHLabError: d is a length, but you gave an angle (deg2rad(30)): pass a plain number.
 """
 from __future__ import annotations
 
@@ -23,7 +23,7 @@ from fractions import Fraction
 import numpy as np
 import sympy as sp
 
-from ..units import Angle, deg, has_angle_mark  # noqa: F401 (deg: for the doctest)
+from ..units import Angle, deg2rad, has_angle_mark  # noqa: F401 (deg2rad: for the doctest)
 
 __all__ = ["DHLabError", "FULL_TURN", "LARGEST_LENGTH", "describe", "as_number", "as_angle", "as_length",
            "check_length_size", "as_tolerance", "as_index", "as_choice", "as_flag", "as_text", "as_timeout"]
@@ -149,13 +149,13 @@ def as_angle(x, name: str, *, symbolic: bool = False, turns: float = 1.0):
         shown = f"{float(value):g}"
         raise DHLabError(
             f"{name} = {shown} rad is more than {'a full turn' if turns == 1 else f'{turns:g} turns'}: "
-            f"angles are in radians. If you meant {shown} degrees, pass dhlab.deg({shown})."
+            f"angles are in radians. If you meant {shown} degrees, pass dhlab.deg2rad({shown})."
         )
     return value
 
 
 def as_length(x, name: str, *, symbolic: bool = False):
-    """A finite length, at most :data:`LARGEST_LENGTH`; a value made by ``deg()`` (an angle) is refused."""
+    """A finite length, at most :data:`LARGEST_LENGTH`; a value made by ``deg2rad()`` (an angle) is refused."""
     if has_angle_mark(x):
         raise DHLabError(f"{name} is a length, but you gave an angle ({describe(x)}): pass a plain number.")
     value = as_number(x, name, symbolic=symbolic)

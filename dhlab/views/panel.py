@@ -8,7 +8,7 @@ that convert.
 
 >>> import dhlab
 >>> robot = dhlab.robots.pr_mechanism()
->>> rows, sliders = joint_sliders(robot, [0.25, dhlab.deg(30)])
+>>> rows, sliders = joint_sliders(robot, [0.25, dhlab.deg2rad(30)])
 >>> [s.description for s in sliders], [round(s.value, 6) for s in sliders]
 (['q1', 'q2'], [0.25, 30.0])
 >>> slider_to_q(robot, sliders).round(6).tolist()
@@ -61,7 +61,7 @@ def checked_start(robot, q) -> np.ndarray:
             shown = [f"{q_to_slider(link, v):g}{unit_of(robot, link)}" for v in (value, lo, hi)]
             raise DHLabError(f"q[{j}] = {shown[0]} is outside joint {j + 1}'s limits "
                              f"[{shown[1]}, {shown[2]}]; start inside them (revolute values in "
-                             "radians: use dhlab.deg(...) for degrees).")
+                             "radians: use dhlab.deg2rad(...) for degrees).")
     return q
 
 

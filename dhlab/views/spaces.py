@@ -384,6 +384,6 @@ def spaces(robot, q=None, *, ik=None, figsize=FIGSIZE, backend: str = "auto") ->
     them are shown, and target sliders and branch buttons appear.
 
     >>> import dhlab
-    >>> panel = spaces(dhlab.robots.pr_mechanism(), [0.5, dhlab.deg(30)])
+    >>> panel = spaces(dhlab.robots.pr_mechanism(), [0.5, dhlab.deg2rad(30)])
     """
     return SpacesPanel(robot, q, ik=ik, figsize=figsize, backend=backend)

@@ -257,8 +257,8 @@ def stepthrough(theta_deg: float = 0.0, d: float = 0.0, a: float = 0.0, alpha_de
 
 def _radians(degrees, name: str) -> float:
     """An angle of a DH row typed in degrees (-360 … 360), in radians."""
-    if has_angle_mark(degrees):      # deg() made it radians already: converting again would be wrong
-        raise DHLabError(f"{name} = {describe(degrees)} is already in radians (made by deg()), but {name} "
+    if has_angle_mark(degrees):      # deg2rad() made it radians already: converting again would be wrong
+        raise DHLabError(f"{name} = {describe(degrees)} is already in radians (made by deg2rad()), but {name} "
                          f"is in degrees: write the plain number of degrees (e.g. {name}=90).")
     value = as_number(degrees, name)
     if abs(value) > 360:

@@ -25,7 +25,7 @@ axes (:mod:`~dhlab.views.livefigure`) is redrawn only when the frame changes.
 >>> import dhlab
 >>> robot = dhlab.robots.ssrms()
 >>> view = robot_view(robot)                 # 3D; a planar robot gets a 2D view
->>> view.update(dhlab.deg([0, 30, 0, 0, 0, 0, 0]))
+>>> view.update(dhlab.deg2rad([0, 30, 0, 0, 0, 0, 0]))
 >>> view.frames.shape                        # the frames drawn last (n+1, 4, 4)
 (8, 4, 4)
 >>> view.set_camera("top"); view.set_zoom(1.5); view.show_labels(False)

@@ -49,7 +49,7 @@ def test_readme_picture(lab_page, lab_root, results_dir):
     try:
         open_notebook(page, f"picture/{copy.name}")
         run_all(page)
-        moved = execute(page, f"panel.set_q(dhlab.deg({POSE_DEG})); print(panel.error)")
+        moved = execute(page, f"panel.set_q(dhlab.deg2rad({POSE_DEG})); print(panel.error)")
         assert moved.strip() == "None", moved
         output = page.locator(".jp-OutputArea-output", has=page.locator(".widget-slider")).first
         readout = output.locator(".widget-html", has_text="End effector").first

@@ -142,7 +142,7 @@ make("slip_theta4_offset.ipynb", {"part1_answers": P1, "part2_answers": ALT_P2,
 # every T_i right, the links drawn in another valid set of frames: full marks, and a note
 make("mixed_valid_frames.ipynb", {"part1_answers": P1, "part2_answers": P2, "part3_answers": ALT_P3})
 
-# --- one checking path: numpy, sympy and deg() values are read as the notebook reads them ---------------
+# --- one checking path: numpy, sympy and deg2rad() values are read as the notebook reads them ---------------
 NUMERIC_P1 = """import numpy as np, sympy as sp
 n_links = np.int64(7)
 n_joints = sp.Integer(6)
@@ -165,12 +165,12 @@ for k, F in enumerate(frames):
     R, o = F[:3, :3], F[:3, 3]
     link_points[k] = [tuple(R.T @ (np.array(world[n]) - o)) for n in names[k]]     # numpy floats"""
 NUMERIC_P3 = """import numpy as np, sympy as sp
-from dhlab import deg
-T1 = Tz(q1, 0) @ Tx(deg(90), 0)
-T2 = Tz(q2 + deg(0), 0) @ Tx(0, np.float64(0.4318))
+from dhlab import deg2rad
+T1 = Tz(q1, 0) @ Tx(deg2rad(90), 0)
+T2 = Tz(q2 + deg2rad(0), 0) @ Tx(0, np.float64(0.4318))
 T3 = Tz(q3, 0.15005) @ Tx(np.float32(-90), 0.0203)
 T4 = Tz(q4, 0.4318) @ Tx(sp.Integer(90), 0)
-T5 = Tz(q5, 0) @ Tx(deg(-90), 0)
+T5 = Tz(q5, 0) @ Tx(deg2rad(-90), 0)
 T6 = Tz(q6, 0) @ Tx(0, 0)
 chain = T1 @ T2 @ T3 @ T4 @ T5 @ T6"""
 make("numeric_types.ipynb", {"part1_answers": NUMERIC_P1, "part2_answers": NUMERIC_P2, "part3_answers": NUMERIC_P3})
