@@ -1,8 +1,11 @@
 # dhlab — two commands do everything, on a machine with nothing but Python 3.10+:
-#   make lab    set up .venv (package + Jupyter kernel) and open the course in JupyterLab
-#   make test   set up .venv and run the whole test suite (pytest + nbval over notebooks/)
-# Other targets: make test-browser (real-browser tier), make test-nbgrader (nbgrader accepts the
-# PUMA source notebook), make bench (benchmarks), make notebooks (re-execute them), make clean.
+#   make lab    set up .venv (package + Jupyter kernel) and open the course home in JupyterLab
+#               (notebooks/index.ipynb: the English and the Spanish edition start there)
+#   make test   set up .venv and run the whole test suite (pytest + nbval over notebooks/ and notebooks/es/)
+# Other targets: make lab-es (the same, JupyterLab's menus in Spanish), make edition (the Spanish
+# notebooks: catalogs updated, stale notebooks rebuilt, everything checked), make test-browser
+# (real-browser tier), make test-nbgrader (nbgrader accepts the PUMA source notebook), make bench
+# (benchmarks), make notebooks (re-execute them, both editions), make clean.
 
 PYTHON ?= python3
 VENV   := .venv
@@ -11,7 +14,7 @@ READY  := $(VENV)/.ready-$(shell cat pyproject.toml constraints.txt | cksum | cu
 # pytest-xdist runs the notebooks two at a time; --dist loadfile keeps one notebook on one worker
 XDIST  ?= -n 2 --dist loadfile
 
-.PHONY: setup lab test test-browser test-nbgrader bench notebooks clean
+.PHONY: setup lab lab-es edition test test-browser test-nbgrader bench notebooks clean
 
 setup: $(READY)
 
@@ -29,8 +32,28 @@ $(READY):
 	  > $(VENV)/share/jupyter/lab/settings/overrides.json
 	touch $@
 
+LAB_ARGS := --ServerApp.root_dir=notebooks --LabApp.default_url=/lab/tree/index.ipynb $(if $(filter 0,$(shell id -u)),--allow-root)
+LAB_ES   := $(VENV)/share/jupyter/lab/settings-es
+
 lab: $(READY)
-	$(BIN)/jupyter lab --ServerApp.root_dir=notebooks $(if $(filter 0,$(shell id -u)),--allow-root)
+	$(BIN)/jupyter lab $(LAB_ARGS)
+
+# JupyterLab's own menus in Spanish (the language pack jupyterlab-language-pack-es-ES, installed with
+# the lab extras): the usual settings plus locale es_ES as the default; a language chosen in
+# Settings > Language still wins, as for `make lab`.
+lab-es: $(READY)
+	mkdir -p $(LAB_ES)
+	$(BIN)/python -c 'import json, sys; s = json.load(open(sys.argv[1])); s["@jupyterlab/translation-extension:plugin"] = {"locale": "es_ES"}; json.dump(s, open(sys.argv[2], "w"))' \
+	  $(VENV)/share/jupyter/lab/settings/overrides.json $(LAB_ES)/overrides.json
+	$(BIN)/jupyter lab $(LAB_ARGS) --LabApp.app_settings_dir=$(LAB_ES)
+
+# The Spanish edition (notebooks/es/, from the English notebooks and dhlab/locale/es/notebooks/*.po):
+# catalogs brought in step with the English (a changed cell becomes fuzzy), the notebooks whose
+# catalog is complete rebuilt and executed if stale, the course home rewritten, then every check.
+edition: $(READY)
+	$(BIN)/python -m dhlab.course.edition extract
+	$(BIN)/python -m dhlab.course.edition build --if-stale
+	$(BIN)/python -m dhlab.course.edition check
 
 test: $(READY)
 	$(BIN)/python -m pytest $(XDIST)
@@ -56,12 +79,14 @@ bench: $(READY)
 	$(if $(RTB),$(BIN)/python -m pip install --quiet roboticstoolbox-python)
 	$(BIN)/python benchmarks/run_all.py
 
-# Re-execute every notebook in place (finite timeout), so stored outputs match the code;
+# Re-execute every notebook in place (finite timeout), so stored outputs match the code (the
+# Spanish ones are rebuilt from the English and their catalogs, and executed);
 # the student version of the PUMA assignment is generated from its source (the teacher's
 # solutions, kept out of notebooks/ as package data), not executed.
 notebooks: $(READY)
-	$(BIN)/python -m dhlab.execute $(filter-out notebooks/08_puma_assignment.ipynb,$(wildcard notebooks/*.ipynb)) dhlab/grading/data/08_puma_assignment.ipynb
+	$(BIN)/python -m dhlab.execute $(filter-out notebooks/08_puma_assignment.ipynb notebooks/index.ipynb,$(wildcard notebooks/*.ipynb)) dhlab/grading/data/08_puma_assignment.ipynb
 	$(BIN)/python -m dhlab.grading.generate
+	$(BIN)/python -m dhlab.course.edition build
 
 clean:
 	rm -rf $(VENV) .pytest_cache build *.egg-info

@@ -41,7 +41,7 @@ KINDS = {                       # notebook -> the score it must get
     ROOT / "dhlab" / "grading" / "data" / "08_puma_assignment.ipynb": 10.0,
     ROOT / "tests" / "data" / "submissions" / "valid_alternative.ipynb": 10.0,
     ROOT / "tests" / "data" / "submissions" / "mistake_part1.ipynb": 9.5,
-    ROOT / "tests" / "data" / "submissions" / "mistake_part2.ipynb": 9.57,
+    ROOT / "tests" / "data" / "submissions" / "mistake_part2.ipynb": 9.14,
     ROOT / "tests" / "data" / "submissions" / "mistake_part3.ipynb": 8.57,
     ROOT / "tests" / "data" / "submissions" / "slip_alpha1.ipynb": 9.29,
     ROOT / "notebooks" / "08_puma_assignment.ipynb": 0.0,

@@ -32,7 +32,7 @@ __version__ = "0.1.0"
 # The interactive views (imported here, after the maths, so that ``dhlab.teach`` is the
 # function even once the submodule of the same name has been imported).
 from .views import view
-from .views.figures import projector
+from .views.projector import projector
 from .views.matrices import show_matrix
 from .views.spaces import spaces
 from .views.stepthrough import stepthrough, stepthrough_link

@@ -27,6 +27,7 @@ import numpy as np
 import sympy as sp
 
 from . import kinematics
+from .i18n import _
 from .symbolic import chain_product, compact, exact, exact_angle, exact_length, legend, simplify_chain
 from .transforms import Rx, Ry, Rz, trans
 from .units import Angle
@@ -57,18 +58,17 @@ class Factor:
     sign: int = 1
 
     def __post_init__(self):
-        as_choice(self.kind, ("R", "T"), "Factor kind ('R' rotation, 'T' translation)")
+        as_choice(self.kind, ("R", "T"), _("Factor kind ('R' rotation, 'T' translation)"))
         as_choice(self.axis, tuple(AXES), "axis")
         object.__setattr__(self, "joint", as_flag(self.joint, "joint"))
         what = "Rot" if self.kind == "R" else "Move"
         object.__setattr__(self, "sign", _sign(self.sign, what))
         if isinstance(self.value, str):
-            raise DHLabError(
-                f"{what}('{self.axis}', {self.value!r}): the amount is text. For a named length or angle use "
-                f"a sympy symbol, e.g. {what}('{self.axis}', sympy.Symbol({self.value!r})), and give its number "
-                f"in the robot's params, e.g. params={{{self.value!r}: 0.5}}."
-            )
-        name = f"the amount of {what}('{self.axis}', ...)"
+            raise DHLabError(_(
+                "{what}('{axis}', {value!r}): the amount is text. For a named length or angle use a sympy "
+                "symbol, e.g. {what}('{axis}', sympy.Symbol({value!r})), and give its number in the robot's "
+                "params, e.g. params={{{value!r}: 0.5}}.").format(what=what, axis=self.axis, value=self.value))
+        name = _("the amount of {what}('{axis}', ...)").format(what=what, axis=self.axis)
         if self.kind == "R":
             value = as_angle(self.value, name + " (radians)", symbolic=True)
         else:
@@ -107,9 +107,10 @@ def _sign(sign, what: str) -> int:
     try:
         value = as_number(sign, "sign")
     except DHLabError as error:
-        raise DHLabError(f"{what}(sign=...): sign must be +1 or -1, got {describe(sign)}: {error}") from None
+        raise DHLabError(_("{what}(sign=...): sign must be +1 or -1, got {got}: {error}").format(
+            what=what, got=describe(sign), error=error)) from None
     if value not in (1.0, -1.0):
-        raise DHLabError(f"{what}(sign=...): sign must be +1 or -1, got {describe(sign)}.")
+        raise DHLabError(_("{what}(sign=...): sign must be +1 or -1, got {got}.").format(what=what, got=describe(sign)))
     return int(value)
 
 
@@ -152,15 +153,14 @@ class Link:
     joint_index: int = field(init=False)
 
     def __post_init__(self):
-        self.factors = as_sequence(self.factors, "a Link's motions", "a list of motions, e.g. "
-                                   "Link([Rot('z', joint=True), Move('x', 0.5)])")
-        self.name = as_text(self.name, "link name")
+        self.factors = as_sequence(self.factors, _("a Link's motions"), _("a list of motions, e.g. "
+                                   "Link([Rot('z', joint=True), Move('x', 0.5)])"))
+        self.name = as_text(self.name, _("link name"))
         moving = [i for i, f in enumerate(self.factors) if isinstance(f, Factor) and f.joint]
         if len(moving) != 1 or not all(isinstance(f, Factor) for f in self.factors):
-            raise DHLabError(
-                f"link {self.name or ''} must be a list of Factor motions with exactly one joint "
-                f"motion (joint=True), got {len(moving)} joint motions."
-            )
+            raise DHLabError(_(
+                "link {name} must be a list of Factor motions with exactly one joint motion (joint=True), "
+                "got {count} joint motions.").format(name=self.name or "", count=len(moving)))
         self.joint_index = moving[0]
         if self.qlim is None:
             self.qlim = (-np.pi, np.pi) if self.is_revolute else DEFAULT_PRISMATIC_RANGE
@@ -206,8 +206,9 @@ class Robot:
         self.q_symbols = _joint_symbols(joint_symbols, self.n)
         clash = sorted(set(self.params) & {s.name for s in self.q_symbols})
         if clash:
-            raise DHLabError(f"{clash[0]} is both a joint variable and a parameter with a fixed value "
-                             f"(params={{{clash[0]!r}: ...}}): rename the parameter or the joint.")
+            raise DHLabError(_("{name} is both a joint variable and a parameter with a fixed value "
+                               "(params={{{name!r}: ...}}): rename the parameter or the joint.").format(
+                                   name=clash[0]))
         self._numeric = self._numeric_factors()
         self._base = self._fixed_transform(base, "base")
         self._tool = self._fixed_transform(tool, "tool")
@@ -245,27 +246,30 @@ class Robot:
         T = as_matrix4(T, name)
         problem = rigid_problem(T)
         if problem:
-            raise DHLabError(f"the robot's {name} transform is not a proper rigid transform: {problem}.")
+            raise DHLabError(_("the robot's {name} transform is not a proper rigid transform: {problem}.").format(
+                name=name, problem=problem))
         return T
 
     def _number(self, factor: Factor, link: int) -> float:
         """A factor's constant as a float, substituting the robot's parameters, checked as what it
         is: an angle for a rotation ('R'), a length for a translation ('T')."""
-        value, kind, where = factor.value, factor.kind, f"link {link} ({factor})"
+        value, kind = factor.value, factor.kind
+        where = _("link {link} ({factor})").format(link=link, factor=factor)
         if isinstance(value, sp.Basic) and value.free_symbols:
             names = sorted(str(s) for s in value.free_symbols)
             missing = [s for s in names if s not in self.params]
             if missing:
-                raise DHLabError(
-                    f"{where} uses {', '.join(missing)}, which has no numeric value: "
-                    f"give it in params, e.g. params={{'{missing[0]}': 1.0}}."
-                )
+                raise DHLabError(_(
+                    "{where} uses {names}, which has no numeric value: give it in params, "
+                    "e.g. params={{'{first}': 1.0}}.").format(where=where, names=", ".join(missing), first=missing[0]))
             angles = [s for s in names if isinstance(self.params[s], Angle)]
             if kind == "T" and angles:
-                raise DHLabError(f"{where} is a length, but parameter {angles[0]} = {self.params[angles[0]]!r} "
-                                 "is an angle (made by deg2rad()): give it as a plain number.")
+                raise DHLabError(_("{where} is a length, but parameter {name} = {value!r} is an angle (made by "
+                                   "deg2rad()): give it as a plain number.").format(
+                                       where=where, name=angles[0], value=self.params[angles[0]]))
             value = value.subs({s: self.params[str(s)] for s in value.free_symbols})
-            where = f"link {link} ({factor}, {', '.join(names)} from params)"
+            where = _("link {link} ({factor}, {names} from params)").format(
+                link=link, factor=factor, names=", ".join(names))
         return as_angle(value, where) if kind == "R" else as_length(value, where)
 
     def _numeric_factors(self):
@@ -341,7 +345,7 @@ class Robot:
         """An upper bound on how far any frame origin gets from frame 0's origin."""
         total = np.linalg.norm(self.tool[:3, 3])
         for link, factors in zip(self.links, self._numeric):
-            for kind, _, const, joint, _ in factors:
+            for kind, _axis, const, joint, _sign in factors:
                 if kind == "T":
                     total += abs(const) + (max(abs(v) for v in link.qlim) if joint else 0.0)
         return float(total)
@@ -400,18 +404,18 @@ class Robot:
 def _link_list(links, expected=None, what: str = "a Link (or RevoluteDH / PrismaticDH)") -> list:
     """The robot's links as a list of ``expected`` (default :class:`Link`), or a clear error."""
     if isinstance(links, (str, bytes, dict, Link)) or not hasattr(links, "__iter__"):
-        raise DHLabError(f"a robot takes a list of links, e.g. [RevoluteDH(a=1), RevoluteDH(a=0.5)]; "
-                         f"got {describe(links)}.")
+        raise DHLabError(_("a robot takes a list of links, e.g. [RevoluteDH(a=1), RevoluteDH(a=0.5)]; "
+                           "got {got}.").format(got=describe(links)))
     try:
         links = list(links)
     except TypeError:            # iterable in name only, e.g. a 0-d numpy array
-        raise DHLabError(f"a robot takes a list of links, e.g. [RevoluteDH(a=1), RevoluteDH(a=0.5)]; "
-                         f"got {describe(links)}.") from None
+        raise DHLabError(_("a robot takes a list of links, e.g. [RevoluteDH(a=1), RevoluteDH(a=0.5)]; "
+                           "got {got}.").format(got=describe(links))) from None
     if not links:
-        raise DHLabError("a robot needs at least one link.")
+        raise DHLabError(_("a robot needs at least one link."))
     for i, link in enumerate(links, start=1):
         if not isinstance(link, expected or Link):
-            raise DHLabError(f"link {i} must be {what}, got {describe(link)}.")
+            raise DHLabError(_("link {i} must be {what}, got {got}.").format(i=i, what=what, got=describe(link)))
     return links
 
 
@@ -420,29 +424,32 @@ def _joint_symbols(names, n: int) -> tuple:
     if names is None:
         names = [f"q{i + 1}" for i in range(n)]
     if isinstance(names, (str, bytes, dict)) or not hasattr(names, "__iter__"):
-        raise DHLabError(f"joint_symbols must be a list of {n} names, e.g. {[f'q{i + 1}' for i in range(n)]}; "
-                         f"got {describe(names)}.")
+        raise DHLabError(_("joint_symbols must be a list of {n} names, e.g. {example}; got {got}.").format(
+            n=n, example=[f"q{i + 1}" for i in range(n)], got=describe(names)))
     try:
         names = list(names)
     except TypeError:            # iterable in name only, e.g. a 0-d numpy array
-        raise DHLabError(f"joint_symbols must be a list of {n} names; got {describe(names)}.") from None
+        raise DHLabError(_("joint_symbols must be a list of {n} names; got {got}.").format(
+            n=n, got=describe(names))) from None
     if len(names) != n:
-        raise DHLabError(f"joint_symbols must name {n} joints, got {len(names)}: {describe(names)}.")
+        raise DHLabError(_("joint_symbols must name {n} joints, got {count}: {got}.").format(
+            n=n, count=len(names), got=describe(names)))
     text = []
     for k, s in enumerate(names):
         if isinstance(s, sp.Symbol):
             s = s.name
         if not isinstance(s, str) or not s.isidentifier():
-            raise DHLabError(f"joint_symbols[{k}] must be a name such as 'q{k + 1}' or 'theta{k + 1}', "
-                             f"got {describe(s)}.")
+            raise DHLabError(_("joint_symbols[{k}] must be a name such as 'q{k1}' or 'theta{k1}', got {got}.").format(
+                k=k, k1=k + 1, got=describe(s)))
         if s in SYMPY_CONSTANTS:        # it would print, and be read back, as the constant
-            raise DHLabError(f"joint_symbols[{k}] = {s!r} is the name of a constant in the printed maths "
-                             f"({SYMPY_CONSTANTS[s]}); name the joint e.g. 'q{k + 1}' or 'theta{k + 1}'.")
+            raise DHLabError(_("joint_symbols[{k}] = {name!r} is the name of a constant in the printed maths "
+                               "({constant}); name the joint e.g. 'q{k1}' or 'theta{k1}'.").format(
+                                   k=k, name=s, constant=SYMPY_CONSTANTS[s], k1=k + 1))
         text.append(s)
     repeated = sorted({s for s in text if text.count(s) > 1})
     if repeated:
-        raise DHLabError(f"joint_symbols name {repeated[0]!r} twice: every joint needs its own variable, "
-                         "or two joints would merge into one in fk_sym().")
+        raise DHLabError(_("joint_symbols name {name!r} twice: every joint needs its own variable, "
+                           "or two joints would merge into one in fk_sym().").format(name=repeated[0]))
     return tuple(sp.Symbol(s, real=True) for s in text)
 
 
@@ -457,7 +464,7 @@ def _one_value(q, i: int):
     except (ValueError, TypeError):          # ragged beyond what an object array holds
         arr = None
     if arr is None or arr.size != 1:
-        raise DHLabError(f"q must be one number, the value of joint {i}, got {describe(q)}.")
+        raise DHLabError(_("q must be one number, the value of joint {i}, got {got}.").format(i=i, got=describe(q)))
     return arr[0]
 
 
@@ -466,16 +473,17 @@ def _numeric_params(params) -> dict:
     if params is None:
         return {}
     if not isinstance(params, dict):
-        raise DHLabError(f"params must be a dict of numbers, e.g. {{'l1': 0.7}}; got {describe(params)}.")
+        raise DHLabError(_("params must be a dict of numbers, e.g. {{'l1': 0.7}}; got {got}.").format(
+            got=describe(params)))
     out = {}
     for key, value in params.items():
         name = key.name if isinstance(key, sp.Symbol) else key
         if not isinstance(name, str) or not name.isidentifier():
-            raise DHLabError(f"params keys must be names such as 'l1', got {describe(key)}.")
+            raise DHLabError(_("params keys must be names such as 'l1', got {got}.").format(got=describe(key)))
         if isinstance(value, sp.Basic) and value.free_symbols or isinstance(value, str):
-            raise DHLabError(f"parameter {name} = {value!r} must be a finite number "
-                             "(a length or an angle in radians).")
-        number = as_number(value, f"parameter {name}")
+            raise DHLabError(_("parameter {name} = {value!r} must be a finite number (a length or an angle in "
+                               "radians).").format(name=name, value=value))
+        number = as_number(value, _("parameter {name}").format(name=name))
         out[name] = value if isinstance(value, Angle) else number   # deg2rad() values stay marked as angles
     return out
 

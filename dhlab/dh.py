@@ -27,6 +27,7 @@ import numpy as np
 import sympy as sp
 
 from .chain import Link, Move, Robot, Rot, _link_list, _numeric_params
+from .i18n import N_, _
 from .symbolic import exact_angle, exact_length
 from .table import DHTable
 from .transforms import Rx, Rz
@@ -40,8 +41,9 @@ __all__ = ["RevoluteDH", "PrismaticDH", "DHRobot"]
 def _check_angle_param(value, name: str):
     """A DH angle (θ, α, offset): radians or a sympy expression; kept as given (deg2rad() keeps its mark)."""
     if isinstance(value, str):
-        raise DHLabError(f"{name} = {value!r} is text: pass a number of radians (e.g. dhlab.deg2rad(90)) or a "
-                         "sympy expression. Tables typed as text go through DHRobot.from_table.")
+        raise DHLabError(_("{name} = {value!r} is text: pass a number of radians (e.g. dhlab.deg2rad(90)) or a "
+                           "sympy expression. Tables typed as text go through DHRobot.from_table.").format(
+                               name=name, value=value))
     checked = as_angle(value, name, symbolic=True)
     return checked if isinstance(checked, sp.Basic) or not isinstance(value, Angle) else value
 
@@ -49,8 +51,9 @@ def _check_angle_param(value, name: str):
 def _check_length_param(value, name: str):
     """A DH length (d, a, offset): a number or a sympy expression, never a deg2rad() value."""
     if isinstance(value, str):
-        raise DHLabError(f"{name} = {value!r} is text: pass a number or a sympy symbol, e.g. sympy.Symbol({value!r}) "
-                         "with its value in the robot's params. Tables typed as text go through DHRobot.from_table.")
+        raise DHLabError(_("{name} = {value!r} is text: pass a number or a sympy symbol, e.g. "
+                           "sympy.Symbol({value!r}) with its value in the robot's params. Tables typed as text go "
+                           "through DHRobot.from_table.").format(name=name, value=value))
     return as_length(value, name, symbolic=True)
 
 
@@ -181,29 +184,29 @@ def links_from_table(rows, params, angles, qlim, revolute, prismatic) -> tuple:
     to_rad = (lambda e: e * sp.pi / 180) if angles == "deg" else (lambda e: e)
     links, symbols = [], []
     for i, row in enumerate(rows, start=1):
-        theta, d, a, alpha = (_parse(v, f"row {i}, {col}", col in "θα" and angles == "deg", col in "da")
+        theta, d, a, alpha = (_parse(v, _("row {i}, {column}").format(i=i, column=col),
+                                     col in "θα" and angles == "deg", col in "da")
                               for v, col in zip(row, "θdaα"))
         limits = limits_per_row[i - 1]
         if angles == "deg":
             _no_marked_angles(params, {"θ": theta, "α": alpha}, i)
         q = _joint_symbol(theta, params)
         if q is not None:
-            offset = to_rad(_offset(theta, q, f"row {i}, θ"))
+            offset = to_rad(_offset(theta, q, _("row {i}, {column}").format(i=i, column="θ")))
             if limits is not None and angles == "deg":
                 limits = _degrees_to_radians(limits, f"qlim[{i - 1}] (row {i}, degrees)")
             links.append(revolute(d=d, a=a, alpha=to_rad(alpha), offset=offset, qlim=limits))
         else:
             q = _joint_symbol(d, params)
             if q is None:
-                raise DHLabError(
-                    f"row {i} {row!r} has no joint variable: θ (revolute) or d (prismatic) must "
-                    f"contain a symbol such as q{i} that params does not give a value."
-                )
+                raise DHLabError(_(
+                    "row {i} {row!r} has no joint variable: θ (revolute) or d (prismatic) must contain a symbol "
+                    "such as q{i} that params does not give a value.").format(i=i, row=row))
             links.append(prismatic(theta=to_rad(theta), a=a, alpha=to_rad(alpha),
-                                   offset=_offset(d, q, f"row {i}, d"), qlim=limits))
+                                   offset=_offset(d, q, _("row {i}, {column}").format(i=i, column="d")), qlim=limits))
         if str(q) in symbols:
-            raise DHLabError(f"rows {symbols.index(str(q)) + 1} and {i} both use {q} as their joint variable: "
-                             "every joint needs its own (q1, q2, …).")
+            raise DHLabError(_("rows {first} and {i} both use {q} as their joint variable: every joint needs its "
+                               "own (q1, q2, …).").format(first=symbols.index(str(q)) + 1, i=i, q=q))
         symbols.append(str(q))
     return links, symbols, params
 
@@ -214,13 +217,14 @@ def refuse_convention(links, convention: str, what: str, advice: str) -> None:
     if isinstance(links, (list, tuple)):
         for i, link in enumerate(links, start=1):
             if getattr(link, "convention", "") == convention:
-                raise DHLabError(f"link {i} is a {what} link, {type(link).__name__}: {advice}")
+                raise DHLabError(_("link {i} is a {what} link, {kind}: {advice}").format(
+                    i=i, what=_(what), kind=type(link).__name__, advice=_(advice)))
 
 
 def _no_modified_links(links) -> None:
-    refuse_convention(links, "modified", "modified-DH (Craig)",
-                      "a DHRobot is standard DH. Build the robot with dhlab.MDHRobot, or convert it with "
-                      "dhlab.to_standard(dhlab.MDHRobot(links)).")
+    refuse_convention(links, "modified", N_("modified-DH (Craig)"),
+                      N_("a DHRobot is standard DH. Build the robot with dhlab.MDHRobot, or convert it with "
+                         "dhlab.to_standard(dhlab.MDHRobot(links))."))
 
 
 def _no_marked_angles(params, angles: dict, i: int) -> None:
@@ -229,17 +233,19 @@ def _no_marked_angles(params, angles: dict, i: int) -> None:
         for symbol in sorted(expr.free_symbols, key=str):
             value = params.get(str(symbol))
             if isinstance(value, Angle):
-                raise DHLabError(f"parameter {symbol} = {value!r} is in row {i}'s {col}, and this table "
-                                 f"is in degrees: give the plain number of degrees ({symbol}={math.degrees(value):g}), "
-                                 "or use angles='rad'.")
+                raise DHLabError(_("parameter {symbol} = {value!r} is in row {i}'s {column}, and this table is in "
+                                   "degrees: give the plain number of degrees ({symbol}={degrees:g}), or use "
+                                   "angles='rad'.").format(symbol=symbol, value=value, i=i, column=col,
+                                                           degrees=math.degrees(value)))
 
 
 def _rows(rows) -> list:
     """The table as a list of rows of 4 entries, or a clear error."""
     example = "[('q1', 0, 1, 0), ('q2', 0, 0.5, 0)]"
-    rows = as_sequence(rows, "the table", f"a list of rows (θ, d, a, α), e.g. {example}")
+    rows = as_sequence(rows, _("the table"), _("a list of rows (θ, d, a, α), e.g. {example}").format(example=example))
     if not rows:
-        raise DHLabError(f"the table is empty: give one row (θ, d, a, α) per joint, e.g. {example}.")
+        raise DHLabError(_("the table is empty: give one row (θ, d, a, α) per joint, e.g. {example}.").format(
+            example=example))
     for i, row in enumerate(rows, start=1):
         try:
             count = None if isinstance(row, (str, bytes, dict, set, frozenset)) else len(row)
@@ -247,22 +253,23 @@ def _rows(rows) -> list:
             count = None
         if count != 4:
             count = "not 4" if count is None else count
-            raise DHLabError(f"row {i} must have 4 entries (θ, d, a, α), got {count}: {describe(row)}.")
+            raise DHLabError(_("row {i} must have 4 entries (θ, d, a, α), got {count}: {got}.").format(
+                i=i, count=count, got=describe(row)))
     return rows
 
 
 def _table_qlim(qlim, n: int) -> list:
     if qlim is None:
         return [None] * n
-    return as_sequence(qlim, "qlim", f"one (low, high) per row ({n} rows)", size=n)
+    return as_sequence(qlim, "qlim", _("one (low, high) per row ({n} rows)").format(n=n), size=n)
 
 
 def _degrees_to_radians(limits, name: str) -> tuple:
     """A revolute joint's limits typed in degrees, as radians (a deg2rad() value here is ambiguous)."""
     if has_angle_mark(limits):
-        raise DHLabError(f"{name}: the table's angles are degrees, so write the limits as plain degrees "
-                         f"(e.g. (-90, 90)), not with deg2rad(); got {describe(limits)}.")
-    limits = as_sequence(limits, name, "two numbers (low, high)", size=2)
+        raise DHLabError(_("{name}: the table's angles are degrees, so write the limits as plain degrees "
+                           "(e.g. (-90, 90)), not with deg2rad(); got {got}.").format(name=name, got=describe(limits)))
+    limits = as_sequence(limits, name, _("two numbers (low, high)"), size=2)
     return tuple(float(v) for v in np.radians([as_number(v, name) for v in limits]))
 
 
@@ -272,20 +279,24 @@ _TEXT = re.compile(r"[\w\s+\-*/().]*")
 def _parse(value, where: str, degrees: bool = False, length: bool = False):
     """A table entry as a sympy number or expression, checked (finite, real)."""
     if degrees and has_angle_mark(value):
-        raise DHLabError(f"{where} = {value!r} is already in radians (made by deg2rad()), but this table's "
-                         "angles are degrees: write the plain number of degrees (e.g. 90), or pass angles='rad'.")
+        raise DHLabError(_("{where} = {value!r} is already in radians (made by deg2rad()), but this table's "
+                           "angles are degrees: write the plain number of degrees (e.g. 90), or pass "
+                           "angles='rad'.").format(where=where, value=value))
     if length and has_angle_mark(value):
-        raise DHLabError(f"{where} is a length, but you gave an angle ({describe(value)}): pass a plain number.")
+        raise DHLabError(_("{where} is a length, but you gave an angle ({got}): pass a plain number.").format(
+            where=where, got=describe(value)))
     if isinstance(value, str):
         text = value.replace("θ", "theta").replace("−", "-").replace("°", "").replace("º", "")
         text = re.sub(r"\s+", " ", text).strip()
         if not text or not _TEXT.fullmatch(text) or "__" in text:
-            raise DHLabError(f"{where}: cannot read {value!r} as a number or an expression like 'q2 + 90'.")
+            raise DHLabError(_("{where}: cannot read {value!r} as a number or an expression like 'q2 + 90'.").format(
+                where=where, value=value))
         names = {n: sp.Symbol(n) for n in re.findall(r"[A-Za-z_]\w*", text) if n != "pi"}
         try:
             value = sp.sympify(text, locals=names)
         except (sp.SympifyError, SyntaxError, TypeError, ValueError, AttributeError, ZeroDivisionError):
-            raise DHLabError(f"{where}: cannot read {value!r} as a number or an expression like 'q2 + 90'.") from None
+            raise DHLabError(_("{where}: cannot read {value!r} as a number or an expression like 'q2 + 90'.").format(
+                where=where, value=value)) from None
     if isinstance(value, sp.Basic):
         value = as_number(value, where, symbolic=True)
     else:
@@ -300,20 +311,23 @@ def _check_degrees(value, where: str) -> None:
     """An angle of a degree table (its constant part, as in 'q2 + 90') is at most a full turn."""
     constant = value.as_coeff_Add()[0]
     if constant.is_number and abs(float(constant)) > 360:
-        raise DHLabError(f"{where} = {float(constant):g}° is more than a full turn: this table's angles are "
-                         "degrees, from -360 to 360 (720° is the same as 0°). Check the number.")
+        raise DHLabError(_("{where} = {value:g}° is more than a full turn: this table's angles are degrees, "
+                           "from -360 to 360 (720° is the same as 0°). Check the number.").format(
+                               where=where, value=float(constant)))
 
 
 def _joint_symbol(expr, params):
     free = [s for s in expr.free_symbols if str(s) not in params]
     if len(free) > 1:
-        raise DHLabError(f"{expr} has several unknown symbols {sorted(map(str, free))}: give the constant "
-                         "ones in params (e.g. params={'l1': 1.0}) so the joint variable is clear.")
+        raise DHLabError(_("{expr} has several unknown symbols {names}: give the constant ones in params "
+                           "(e.g. params={{'l1': 1.0}}) so the joint variable is clear.").format(
+                               expr=expr, names=sorted(map(str, free))))
     return free[0] if free else None
 
 
 def _offset(expr, q, where: str):
     offset = sp.expand(expr - q)
     if offset.has(q):
-        raise DHLabError(f"{where}: the joint variable must appear as '+{q}', got {expr}.")
+        raise DHLabError(_("{where}: the joint variable must appear as '+{q}', got {expr}.").format(
+            where=where, q=q, expr=expr))
     return offset

@@ -5,10 +5,13 @@ says ``dhlab.set_language("es")`` in its first cell, and the grader and the
 release read the ``DHLAB_LANGUAGE`` environment variable (or their
 ``--language`` option). Messages are looked up in gettext catalogs
 (``dhlab/locale/<lang>/LC_MESSAGES/dhlab.mo``, compiled from the ``.po`` files
-beside them); a message without a translation is shown in English.
+beside them, and kept up to date by ``python -m dhlab.i18n_catalog``); a message
+without a translation is shown in English.
 
 >>> from dhlab.i18n import set_language, _
 >>> previous = set_language("es")
+>>> _("{name} is not right yet.").format(name="q")
+'q todavía no está bien.'
 >>> set_language(previous)
 'es'
 """
@@ -38,7 +41,8 @@ def _checked(language) -> str:
     if not isinstance(language, str) or language.strip().lower() not in LANGUAGES:
         from .validation import DHLabError     # (validation will import this module)
         choices = ", ".join(f"{code!r} ({name})" for code, name in LANGUAGES.items())
-        raise DHLabError(f"language = {language!r} is not one of the course's languages: choose {choices}.")
+        raise DHLabError(_("language = {language!r} is not one of the course's languages: choose {choices}.").format(
+            language=language, choices=choices))
     return language.strip().lower()
 
 
@@ -62,7 +66,9 @@ def language_from_env(default: str = "en") -> str:
 
 def _(message: str) -> str:
     """``message`` (an English text, possibly with ``{placeholders}``) in the current language."""
-    return message if _current == "en" else _catalog(_current).gettext(message)
+    if _current == "en" or not message:      # (gettext maps "" to the catalog's header)
+        return message
+    return _catalog(_current).gettext(message)
 
 
 def N_(message: str) -> str:

@@ -18,6 +18,7 @@ import math
 
 import numpy as np
 
+from .i18n import _
 from .validation import DHLabError, as_length, as_tolerance, describe
 
 __all__ = ["pr_mechanism_ik", "pr_mechanism_ik_explained", "IKSolutions"]
@@ -35,17 +36,18 @@ def _lengths(robot_or_params):
     """(l1, l2) of the P-R mechanism, from the robot itself or a dict of its two lengths."""
     if isinstance(robot_or_params, dict):
         if set(robot_or_params) != {"l1", "l2"}:
-            raise DHLabError("pass the P-R mechanism (dhlab.robots.pr_mechanism()) or a dict "
-                             f"{{'l1': ..., 'l2': ...}} with its two lengths; got {describe(robot_or_params)}.")
+            raise DHLabError(_("pass the P-R mechanism (dhlab.robots.pr_mechanism()) or a dict "
+                               "{{'l1': ..., 'l2': ...}} with its two lengths; got {got}.").format(
+                                   got=describe(robot_or_params)))
         l1, l2 = (as_length(robot_or_params[k], k) for k in ("l1", "l2"))
     elif _is_pr_mechanism(robot_or_params):
         l1, l2 = robot_or_params.params["l1"], robot_or_params.params["l2"]
     else:
-        raise DHLabError("pr_mechanism_ik solves seed 003's P-R mechanism only: pass "
-                         "dhlab.robots.pr_mechanism() (any lengths) or a dict {'l1': ..., 'l2': ...}; "
-                         f"got {describe(robot_or_params)}.")
+        raise DHLabError(_("pr_mechanism_ik solves seed 003's P-R mechanism only: pass "
+                           "dhlab.robots.pr_mechanism() (any lengths) or a dict {{'l1': ..., 'l2': ...}}; "
+                           "got {got}.").format(got=describe(robot_or_params)))
     if l2 <= 0:
-        raise DHLabError(f"l2 = {l2} must be a positive length (the rotating arm).")
+        raise DHLabError(_("l2 = {l2} must be a positive length (the rotating arm).").format(l2=l2))
     return l1, l2
 
 
@@ -55,7 +57,7 @@ def _is_pr_mechanism(robot) -> bool:
     params = getattr(robot, "params", None)
     if numeric is None or not isinstance(params, dict) or not {"l1", "l2"} <= set(params):
         return False
-    shape = [[(kind, axis, joint, sign) for kind, axis, _, joint, sign in link] for link in numeric]
+    shape = [[(kind, axis, joint, sign) for kind, axis, _const, joint, sign in link] for link in numeric]
     return (shape == [[("T", 0, True, 1)], [("R", 2, True, 1), ("T", 0, False, 1)]]
             and numeric[0][0][2] == params["l1"] and numeric[1][0][2] == 0 and numeric[1][1][2] == params["l2"]
             and np.array_equal(robot.base, np.eye(4)) and np.array_equal(robot.tool, np.eye(4)))
@@ -71,16 +73,18 @@ def pr_mechanism_ik(robot_or_params, x: float, y: float, tol: float = 1e-12) -> 
     tol = as_tolerance(tol, "tol", upper=1e-2, zero=True)
     ratio = y / l2
     if abs(ratio) > 1 + tol:
-        return IKSolutions([], f"no solution: |y| = {abs(y):g} > l2 = {l2:g}, the arm cannot reach "
-                               f"that height (the point is outside the workspace, |y| ≤ l2).")
+        return IKSolutions([], _("no solution: |y| = {y:g} > l2 = {l2:g}, the arm cannot reach that height (the "
+                                 "point is outside the workspace, |y| ≤ l2).").format(y=abs(y), l2=l2))
     ratio = max(-1.0, min(1.0, ratio))
     q2a = math.asin(ratio)
     root = l2 * math.sqrt(max(0.0, 1 - ratio * ratio))
     a = np.array([x - l1 - root, q2a])
     if root <= tol * l2:
-        return IKSolutions([a], f"one solution: |y| = l2, the two branches meet (q2 = {math.degrees(q2a):g}°).")
+        return IKSolutions([a], _("one solution: |y| = l2, the two branches meet (q2 = {q2:g}°).").format(
+            q2=math.degrees(q2a)))
     b = np.array([x - l1 + root, math.pi - q2a])
-    return IKSolutions([a, b], "two solutions: branch A (arm pointing forward, +x) and B (arm pointing back, −x).")
+    return IKSolutions([a, b], _("two solutions: branch A (arm pointing forward, +x) and B (arm pointing back, "
+                                 "−x)."))
 
 
 def pr_mechanism_ik_explained(robot_or_params, x: float, y: float) -> str:

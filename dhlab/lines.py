@@ -29,6 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .i18n import _
 from .validation import DHLabError, as_float_array, as_number, check_length_size
 
 __all__ = ["Line", "LineRelation", "relation", "closest_points"]
@@ -59,8 +60,8 @@ class Line:
         largest = float(np.abs(direction).max())      # divided first: the square of 1e308 overflows
         scaled = direction / largest if largest else direction
         if largest * float(np.linalg.norm(scaled)) < 1e-12:
-            raise DHLabError(f"Line direction is {_short(self.direction)}: a line needs a non-zero direction "
-                             "vector, e.g. (0, 0, 1) for a line along z.")
+            raise DHLabError(_("Line direction is {got}: a line needs a non-zero direction vector, e.g. (0, 0, 1) "
+                               "for a line along z.").format(got=_short(self.direction)))
         direction = scaled / np.linalg.norm(scaled)
         point.setflags(write=False)
         direction.setflags(write=False)
@@ -156,7 +157,7 @@ def relation(a, b, tol: float = 1e-9, angle_tol: float = 1e-9) -> LineRelation:
         return LineRelation("parallel", distance, angle, b.point.copy(), perp / distance + 0.0)
     n = c / sin
     along = float(w @ n)                             # w's component along the common normal
-    _, foot = closest_points(a, b)
+    foot = closest_points(a, b)[1]
     if abs(along) <= tol:
         return LineRelation("intersect", abs(along), angle, foot, n + 0.0)
     return LineRelation("skew", abs(along), angle, foot, math.copysign(1.0, along) * n + 0.0)
@@ -200,22 +201,23 @@ def _as_line(x, name: str) -> Line:
         return x
     if (isinstance(x, (str, bytes)) or (isinstance(x, np.ndarray) and x.ndim == 0)   # 0-d: len() fails
             or not hasattr(x, "__len__") or len(x) != 2):
-        raise DHLabError(f"line {name} must be a dhlab.lines.Line or a (point, direction) pair, "
-                         f"e.g. ((0, 0, 0), (0, 0, 1)); got {_short(x)}.")
+        raise DHLabError(_("line {name} must be a dhlab.lines.Line or a (point, direction) pair, "
+                           "e.g. ((0, 0, 0), (0, 0, 1)); got {got}.").format(name=name, got=_short(x)))
     return Line(*x)
 
 
 def _read_tol(tol, angle_tol) -> tuple:
     values = []
-    for name, value, upper, hint in (("tol", tol, math.inf, "a length, e.g. 1e-9"),
-                                     ("angle_tol", angle_tol, math.pi / 2, "radians, e.g. 1e-9")):
+    for name, value, upper, hint in (("tol", tol, math.inf, _("a length, e.g. 1e-9")),
+                                     ("angle_tol", angle_tol, math.pi / 2, _("radians, e.g. 1e-9"))):
         try:
             number = as_number(value, name)       # refuses text ('1e-9') and True, as float() does not
         except DHLabError:
             number = math.nan
         if not 0 <= number < upper:
-            raise DHLabError(f"{name} must be a number ≥ 0 ({hint}"
-                             + (", below π/2" if upper < math.inf else "") + f"), got {_short(value)}.")
+            message = (_("{name} must be a number ≥ 0 ({hint}, below π/2), got {got}.") if upper < math.inf else
+                       _("{name} must be a number ≥ 0 ({hint}), got {got}."))
+            raise DHLabError(message.format(name=name, hint=hint, got=_short(value)))
         values.append(number)
     return tuple(values)
 
@@ -225,9 +227,11 @@ def _vector3(value, name: str, length: bool = False) -> np.ndarray:
     (a point) each coordinate at most LARGEST_LENGTH, so that distances stay finite."""
     arr = np.array(as_float_array(value, name), dtype=float)
     if arr.shape != (3,):
-        raise DHLabError(f"{name} must be 3 numbers (x, y, z), got shape {arr.shape}: {_short(value)}.")
+        raise DHLabError(_("{name} must be 3 numbers (x, y, z), got shape {shape}: {got}.").format(
+            name=name, shape=arr.shape, got=_short(value)))
     if not np.isfinite(arr).all():
-        raise DHLabError(f"{name} is {arr.tolist()}: every coordinate must be a finite number.")
+        raise DHLabError(_("{name} is {values}: every coordinate must be a finite number.").format(
+            name=name, values=arr.tolist()))
     if length:
         check_length_size(float(np.abs(arr).max()), name)
     return arr

@@ -45,6 +45,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .chain import Robot, _link_list
+from .i18n import N_, _
 from .dh import DHParameters, DHRobot, PrismaticDH, RevoluteDH, _parse, _rows, links_from_table, refuse_convention
 from .table import DHTable
 from .transforms import Rx, Rz, trans
@@ -104,9 +105,9 @@ class MDHRobot(Robot):
 
     def __init__(self, links, name: str = "robot", base=None, tool=None,
                  params=None, joint_symbols=None, unit: str = ""):
-        refuse_convention(links, "standard", "standard DH",
-                          "an MDHRobot is modified DH (Craig). Use RevoluteMDH / PrismaticMDH, or build a "
-                          "dhlab.DHRobot and convert it with dhlab.to_modified(robot).")
+        refuse_convention(links, "standard", N_("standard DH"),
+                          N_("an MDHRobot is modified DH (Craig). Use RevoluteMDH / PrismaticMDH, or build a "
+                             "dhlab.DHRobot and convert it with dhlab.to_modified(robot)."))
         links = _link_list(links, MDHLink, "RevoluteMDH(...) or PrismaticMDH(...)")
         super().__init__(links, name=name, base=base, tool=tool, params=params,
                          joint_symbols=joint_symbols, unit=unit)
@@ -142,8 +143,9 @@ def _same_joint(link, kind, a, alpha):
 
 def _robot(robot, cls, what: str):
     if not isinstance(robot, cls):
-        raise DHLabError(f"{what} takes a dhlab.{cls.__name__}, got {describe(robot)}"
-                         + (" (it is already in the other convention)." if isinstance(robot, Robot) else "."))
+        message = (_("{what} takes a dhlab.{cls}, got {got} (it is already in the other convention).")
+                   if isinstance(robot, Robot) else _("{what} takes a dhlab.{cls}, got {got}."))
+        raise DHLabError(message.format(what=what, cls=cls.__name__, got=describe(robot)))
     return robot
 
 
@@ -181,11 +183,11 @@ def _typed_rows(rows) -> list:
     (the entries are returned as typed: ``"q2 - 90"`` stays text)."""
     rows = [tuple(row) for row in _rows(rows)]
     for i, row in enumerate(rows, start=1):
-        theta, d, _, _ = (_parse(value, f"row {i}, {column}", length=column in "da")
-                          for value, column in zip(row, "θdaα"))
+        theta, d, _a, _alpha = (_parse(value, _("row {i}, {column}").format(i=i, column=column),
+                                       length=column in "da") for value, column in zip(row, "θdaα"))
         if not (theta.free_symbols or d.free_symbols):
-            raise DHLabError(f"row {i} {row!r} has no joint variable: θ (revolute) or d (prismatic) must "
-                             f"contain a symbol such as q{i}.")
+            raise DHLabError(_("row {i} {row!r} has no joint variable: θ (revolute) or d (prismatic) must "
+                               "contain a symbol such as q{i}.").format(i=i, row=row))
     return rows
 
 
@@ -198,8 +200,8 @@ def to_modified_rows(rows) -> tuple:
     ([('q1', 0.5, 0, 0), ('q2 - 90', 0, 0.2, -90)], (0.5, 0))
     """
     rows = _typed_rows(rows)
-    above = [(0, 0)] + [(a, alpha) for _, _, a, alpha in rows]
-    return [(theta, d, a, alpha) for (theta, d, _, _), (a, alpha) in zip(rows, above)], above[-1]
+    above = [(0, 0)] + [(a, alpha) for _theta, _d, a, alpha in rows]
+    return [(theta, d, a, alpha) for (theta, d, _a, _alpha), (a, alpha) in zip(rows, above)], above[-1]
 
 
 def to_standard_rows(rows) -> tuple:
@@ -211,5 +213,5 @@ def to_standard_rows(rows) -> tuple:
     ([('q1', 0.5, 0.2, -90), ('q2 - 90', 0, 0, 0)], (0, 0))
     """
     rows = _typed_rows(rows)
-    below = [(a, alpha) for _, _, a, alpha in rows[1:]] + [(0, 0)]
-    return [(theta, d, a, alpha) for (theta, d, _, _), (a, alpha) in zip(rows, below)], rows[0][2:]
+    below = [(a, alpha) for _theta, _d, a, alpha in rows[1:]] + [(0, 0)]
+    return [(theta, d, a, alpha) for (theta, d, _a, _alpha), (a, alpha) in zip(rows, below)], rows[0][2:]

@@ -16,6 +16,7 @@ import sympy as sp
 
 from .chain import Link, Move, Robot, Rot
 from .dh import DHRobot
+from .i18n import _
 from .validation import DHLabError, as_flag, as_length
 
 __all__ = [
@@ -38,8 +39,9 @@ def _link_length(value, name: str) -> float:
     refused). A negative one is a mistake: where a seed's table needs −l2, the table writes the sign."""
     value = as_length(value, name)
     if value < 0:
-        raise DHLabError(f"{name} = {value:g} is a length of the robot's links: it must be 0 or more. Where a "
-                         "table needs a negative a or d, the table itself writes the sign (e.g. '-l2').")
+        raise DHLabError(_("{name} = {value:g} is a length of the robot's links: it must be 0 or more. Where a "
+                           "table needs a negative a or d, the table itself writes the sign (e.g. '-l2').").format(
+                               name=name, value=value))
     return value + 0.0                 # -0.0 -> 0.0
 
 
@@ -50,7 +52,7 @@ def robot_no_tan_elemental_1(l1: float = 0.70, l2: float = 0.30) -> Robot:
     """
     return Robot([Link([Rot("z", joint=True), Move("y", L1)], name="link 1"),
                   Link([Rot("z", joint=True), Move("x", L2)], name="link 2")],
-                 name="robot no tan elemental 1 (seed 004)", params=_lengths(l1=l1, l2=l2),
+                 name=_("robot no tan elemental 1 (seed 004)"), params=_lengths(l1=l1, l2=l2),
                  joint_symbols=("theta0", "theta1"), unit="m")
 
 
@@ -62,7 +64,7 @@ def robot_no_tan_elemental_2(l: float = 0.70, d_max: float = 0.30) -> Robot:
     """
     return Robot([Link([Rot("z", joint=True), Move("y", L)], name="link 1"),
                   Link([Move("y", joint=True)], name="link 2", qlim=(0.0, _link_length(d_max, "d_max")))],
-                 name="robot no tan elemental 2 (seed 004)", params=_lengths(l=l),
+                 name=_("robot no tan elemental 2 (seed 004)"), params=_lengths(l=l),
                  joint_symbols=("theta", "d"), unit="m")
 
 
@@ -72,14 +74,14 @@ def pr_mechanism(l1: float = 1.0, l2: float = 0.5, q1_range=(0.0, 2.0)) -> Robot
     (the seed gives no unit, so none is shown)."""
     return Robot([Link([Move("x", L1, joint=True)], name="slider", qlim=q1_range),
                   Link([Rot("z", joint=True), Move("x", L2)], name="arm")],
-                 name="P-R mechanism (seed 003)", params=_lengths(l1=l1, l2=l2))
+                 name=_("P-R mechanism (seed 003)"), params=_lengths(l1=l1, l2=l2))
 
 
 def prr_example(l1=1.0, l2=0.5, l3=2.0, l4=1.5) -> DHRobot:
     """Seed 003's geometric example 1, the planar P-R-R (plane xz), as a DH table.
     Lengths: verifier's choice."""
     return DHRobot.from_table([(0, "q1 + l1", "l2", -90), ("q2 - 90", 0, "l3", 0), ("q3", 0, "l4", 0)],
-                              name="P-R-R example (seed 003)", params=_lengths(l1=l1, l2=l2, l3=l3, l4=l4),
+                              name=_("P-R-R example (seed 003)"), params=_lengths(l1=l1, l2=l2, l3=l3, l4=l4),
                               qlim=[(0.0, 1.0), (-180, 180), (-180, 180)])
 
 
@@ -89,7 +91,7 @@ def prr_example_matrices(l1=1.0, l2=0.5, l3=2.0, l4=1.5) -> Robot:
     return Robot([Link([Move("z", L1, joint=True), Move("x", L2)], name="slider", qlim=(0.0, 1.0)),
                   Link([Rot("y", joint=True), Move("z", L3)], name="link 2"),
                   Link([Rot("y", joint=True), Move("z", L4)], name="link 3")],
-                 name="P-R-R example by matrices (seed 003)", params=_lengths(l1=l1, l2=l2, l3=l3, l4=l4))
+                 name=_("P-R-R example by matrices (seed 003)"), params=_lengths(l1=l1, l2=l2, l3=l3, l4=l4))
 
 
 # The DH base frame of the 3R example: x0 = world y, y0 = world z, z0 = world x.
@@ -100,7 +102,7 @@ def rrr_example(l1=1.0, l2=2.0, l3=1.5) -> DHRobot:
     """Seed 003's geometric example 2 (3R, joint 1 about the world x axis) as a DH table,
     with the base transform that puts z0 on world x. Lengths: verifier's choice."""
     return DHRobot.from_table([("q1", "l1", 0, 90), ("q2", 0, "l2", 0), ("q3", 0, "l3", 0)],
-                              name="3R example (seed 003)", params=_lengths(l1=l1, l2=l2, l3=l3),
+                              name=_("3R example (seed 003)"), params=_lengths(l1=l1, l2=l2, l3=l3),
                               base=RRR_BASE)
 
 
@@ -109,13 +111,13 @@ def rrr_example_matrices(l1=1.0, l2=2.0, l3=1.5) -> Robot:
     return Robot([Link([Move("x", L1), Rot("x", joint=True)], name="link 1"),
                   Link([Rot("z", joint=True, sign=-1), Move("y", L2)], name="link 2"),
                   Link([Rot("z", joint=True, sign=-1), Move("y", L3)], name="link 3")],
-                 name="3R example by matrices (seed 003)", params=_lengths(l1=l1, l2=l2, l3=l3))
+                 name=_("3R example by matrices (seed 003)"), params=_lengths(l1=l1, l2=l2, l3=l3))
 
 
 def seed002_4dof(l1=1.0, l4=0.5, d_range=(0.0, 1.0)) -> DHRobot:
     """Seed 002's 4-DOF R-P-P-R table. l1 = 1, l4 = 0.5: verifier's choice."""
     return DHRobot.from_table([("q1", "l1", 0, 0), (90, "d2", 0, 90), (0, "d3", 0, 0), ("q4", "l4", 0, 0)],
-                              name="4-DOF R-P-P-R (seed 002)", params=_lengths(l1=l1, l4=l4),
+                              name=_("4-DOF R-P-P-R (seed 002)"), params=_lengths(l1=l1, l4=l4),
                               qlim=[(-180, 180), d_range, d_range, (-180, 180)])
 
 
@@ -123,7 +125,7 @@ def seed002_6dof(l1=1.0, l2=2.0, l3=3.0, l4=4.0) -> DHRobot:
     """Seed 002's 6-DOF revolute table (θ1…θ6). Lengths 1, 2, 3, 4: verifier's choice."""
     return DHRobot.from_table([("theta1", 0, 0, -90), ("theta2", "l1", 0, 90), ("theta3 - 90", 0, "-l2", 90),
                                ("theta4", "l3", 0, -90), ("theta5", 0, 0, 90), ("theta6", "l4", 0, 0)],
-                              name="6-DOF robot (seed 002)", params=_lengths(l1=l1, l2=l2, l3=l3, l4=l4))
+                              name=_("6-DOF robot (seed 002)"), params=_lengths(l1=l1, l2=l2, l3=l3, l4=l4))
 
 
 def seed003_6dof(l1=1.0, l2=2.0, l3=3.0, l4=4.0) -> DHRobot:
@@ -131,7 +133,7 @@ def seed003_6dof(l1=1.0, l2=2.0, l3=3.0, l4=4.0) -> DHRobot:
     Lengths 1, 2, 3, 4: verifier's choice."""
     return DHRobot.from_table([("q1", "l1", 0, 90), ("q2 + 90", 0, "l2", 0), ("q3 - 90", 0, 0, -90),
                                ("q4 - 90", "l3", 0, -90), ("q5", 0, 0, 90), ("q6", "l4", 0, 0)],
-                              name="6-DOF robot (seed 003)", params=_lengths(l1=l1, l2=l2, l3=l3, l4=l4))
+                              name=_("6-DOF robot (seed 003)"), params=_lengths(l1=l1, l2=l2, l3=l3, l4=l4))
 
 
 def ssrms() -> DHRobot:
@@ -139,7 +141,7 @@ def ssrms() -> DHRobot:
     (lengths in the seed's units; joints ±270° as on the real arm)."""
     rows = [("theta1", 2.5, 0, -90), ("theta2", 6, 0, -90), ("theta3", 6, 12, 0), ("theta4", 1, 12, 0),
             ("theta5", 6, 0, -90), ("theta6", 6, 0, -90), ("theta7", 0, 0, 0)]
-    return DHRobot.from_table(rows, name="SSRMS (seed 000)", qlim=[(-270, 270)] * 7)
+    return DHRobot.from_table(rows, name=_("SSRMS (seed 000)"), qlim=[(-270, 270)] * 7)
 
 
 PUMA_QLIM_DEG = [(-160, 160), (-45, 225), (-225, 45), (-110, 170), (-100, 100), (-266, 266)]

@@ -30,6 +30,8 @@ import sympy as sp
 from sympy.simplify.fu import TR10i
 from sympy.utilities.exceptions import SymPyDeprecationWarning
 
+from .i18n import _
+
 __all__ = ["exact", "exact_angle", "exact_length", "chain_product", "simplify_chain", "compact", "legend",
            "count_ops", "tree_size"]
 
@@ -116,11 +118,11 @@ def _deadline(timeout):
 def _check_time(deadline):
     if deadline is not None and time.monotonic() > deadline:
         from .validation import DHLabError
-        raise DHLabError(
+        raise DHLabError(_(
             "fk_sym(simplify=True) stopped: it ran out of time (the timeout option, in seconds). "
             "Pass a larger timeout (or timeout=None for no limit), use simplify=False, which is fast "
             "for any chain, or work numerically with robot.fk(q)."
-        )
+        ))
 
 
 def tree_size(e, _memo=None) -> int:
@@ -197,27 +199,30 @@ def _check_finite_entries(M, who: str) -> None:
         where = f"M[{i}, {j}] = {describe(M[i, j])}"
     else:
         where = f"M = {describe(M)}"
-    raise DHLabError(f"{who}: {where} is not finite: every entry of M must be a finite expression "
-                     "(no nan, oo or zoo; check for a division by zero, e.g. 1/cos(q) at q = pi/2).")
+    raise DHLabError(_("{who}: {where} is not finite: every entry of M must be a finite expression "
+                       "(no nan, oo or zoo; check for a division by zero, e.g. 1/cos(q) at q = pi/2).").format(
+                           who=who, where=where))
 
 
 def _joint_arguments(M, q_symbols, who: str):
     """``M`` as a sympy object and the joint symbols as the symbols of ``M`` (names accepted)."""
     from .validation import DHLabError, as_number, describe
     if isinstance(M, (str, bytes)) or isinstance(M, bool) or M is np.ma.masked or isinstance(M, np.ma.MaskedArray):
-        raise DHLabError(f"{who}: M must be a sympy Matrix or expression (e.g. robot.fk_sym()), got {describe(M)}.")
+        raise DHLabError(_("{who}: M must be a sympy Matrix or expression (e.g. robot.fk_sym()), got {got}.").format(
+            who=who, got=describe(M)))
     try:
         with warnings.catch_warnings():          # sympy only warns about a list inside a Matrix entry
             warnings.simplefilter("error", SymPyDeprecationWarning)
             M = sp.Matrix(M) if isinstance(M, (list, tuple)) else sp.sympify(M, strict=True)
     except (sp.SympifyError, TypeError, ValueError, SymPyDeprecationWarning):
-        raise DHLabError(f"{who}: M must be a sympy Matrix or expression (e.g. robot.fk_sym()), "
-                         f"got {describe(M)}.") from None
+        raise DHLabError(_("{who}: M must be a sympy Matrix or expression (e.g. robot.fk_sym()), got {got}.").format(
+            who=who, got=describe(M))) from None
     entries = M if isinstance(M, sp.MatrixBase) else [M]
     if not isinstance(M, (sp.Expr, sp.MatrixBase)) or not all(isinstance(e, sp.Expr) for e in entries):
-        raise DHLabError(f"{who}: M must be a sympy Matrix or expression, got {describe(M)}.")
+        raise DHLabError(_("{who}: M must be a sympy Matrix or expression, got {got}.").format(
+            who=who, got=describe(M)))
     if isinstance(M, sp.MatrixBase) and not M:
-        raise DHLabError(f"{who}: M is an empty matrix: pass a sympy Matrix such as robot.fk_sym().")
+        raise DHLabError(_("{who}: M is an empty matrix: pass a sympy Matrix such as robot.fk_sym().").format(who=who))
     _check_finite_entries(M, who)
     for k, e in enumerate(entries):      # real: a pose has no imaginary part, and a float overflows no entry
         as_number(e, f"{who}: M[{k}]" if isinstance(M, sp.MatrixBase) else f"{who}: M", symbolic=True)
@@ -227,11 +232,13 @@ def _joint_arguments(M, q_symbols, who: str):
     for q in q_symbols:
         name = q.name if isinstance(q, sp.Symbol) else q
         if not isinstance(name, str):
-            raise DHLabError(f"{who}: the joint variables must be symbols or names such as 'q1', got {describe(q)}.")
+            raise DHLabError(_("{who}: the joint variables must be symbols or names such as 'q1', got {got}.").format(
+                who=who, got=describe(q)))
         out.append(by_name.get(name, sp.Symbol(name)))      # absent from M: harmless
     if by_name and not set(out) & set(by_name.values()):
-        raise DHLabError(f"{who}: none of the joint variables {[str(q) for q in out]} appears in M (its symbols "
-                         f"are {sorted(by_name)}): pass the robot's joint symbols, e.g. robot.q_symbols.")
+        raise DHLabError(_("{who}: none of the joint variables {names} appears in M (its symbols are {symbols}): "
+                           "pass the robot's joint symbols, e.g. robot.q_symbols.").format(
+                               who=who, names=[str(q) for q in out], symbols=sorted(by_name)))
     return M, tuple(out)
 
 

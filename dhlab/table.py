@@ -12,6 +12,8 @@ import math
 
 import sympy as sp
 
+from .i18n import N_, _
+
 __all__ = ["DHTable", "format_angle", "format_length"]
 
 
@@ -46,15 +48,15 @@ def _with_offset(var: str, offset: str) -> str:
 class DHTable:
     """The DH table of a :class:`~dhlab.DHRobot`, for display (``print`` or Jupyter)."""
 
-    header = ("i", "θ", "d", "a", "α", "joint")
-    modified_header = ("i", "θ_i", "d_i", "a_(i−1)", "α_(i−1)", "joint")
+    header = ("i", "θ", "d", "a", "α", N_("joint"))        # words marked N_ are translated when shown
+    modified_header = ("i", "θ_i", "d_i", "a_(i−1)", "α_(i−1)", N_("joint"))
 
     def __init__(self, robot):
         if not all(hasattr(robot, name) for name in ("links", "joint_labels", "name")) or \
                 not all(hasattr(link, "alpha") for link in getattr(robot, "links", [None])):
             from .validation import DHLabError, describe   # (validation does not import this module)
-            raise DHLabError(f"DHTable shows the table of a DHRobot (e.g. DHTable(dhlab.robots.puma560()), "
-                             f"or robot.table()); got {describe(robot)}.")
+            raise DHLabError(_("DHTable shows the table of a DHRobot (e.g. DHTable(dhlab.robots.puma560()), "
+                               "or robot.table()); got {got}.").format(got=describe(robot)))
         self.robot = robot
         self.modified = all(getattr(link, "convention", "") == "modified" for link in robot.links)
         if self.modified:
@@ -74,20 +76,24 @@ class DHTable:
                 "R" if link.is_revolute else "P")
 
     def __str__(self) -> str:
-        cells = [self.header] + self.rows
+        cells = [self._shown_header()] + self.rows
         widths = [max(len(r[c]) for r in cells) for c in range(len(self.header))]
         lines = [" | ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in cells]
         return "\n".join(" " + line for line in lines)
 
     def _title(self, name: str) -> str:
-        return ("modified DH (Craig) table of " if self.modified else "DH table of ") + name
+        return (_("modified DH (Craig) table of {name}") if self.modified else _("DH table of {name}")).format(
+            name=name)
+
+    def _shown_header(self) -> tuple:
+        return tuple(_(h) if h == "joint" else h for h in self.header)
 
     def __repr__(self) -> str:
         return f"{self._title(repr(self.robot.name))}:\n{self}"
 
     def _repr_html_(self) -> str:
-        head = "".join(f"<th>{html.escape(h)}</th>" for h in self.header)
+        head = "".join(f"<th>{html.escape(h)}</th>" for h in self._shown_header())
         body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in row) + "</tr>"
                        for row in self.rows)
-        caption = html.escape(f"{self._title(self.robot.name)} (angles in degrees)")
+        caption = html.escape(_("{title} (angles in degrees)").format(title=self._title(self.robot.name)))
         return f"<table><caption>{caption}</caption><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"

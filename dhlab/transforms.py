@@ -31,6 +31,7 @@ import math
 import numpy as np
 import sympy as sp
 
+from .i18n import _
 from .validation import (DHLabError, as_angle, as_length, as_matrix4, as_sym_matrix4,
                          as_text, as_tolerance, rigid_problem)
 
@@ -154,7 +155,7 @@ def check_rigid(T, name: str = "T", tol: float = 1e-9) -> np.ndarray:
     T = as_matrix4(T, name)
     problem = rigid_problem(T, tol)
     if problem:
-        raise DHLabError(f"{name} is not a proper rigid transform: {problem}.")
+        raise DHLabError(_("{name} is not a proper rigid transform: {problem}.").format(name=name, problem=problem))
     return T
 
 
@@ -173,8 +174,9 @@ def inv(T):
         if not T.free_symbols:
             check_rigid(T, "T")            # a numeric sympy matrix must be rigid, as a numpy one
         elif T[3, :] != sp.Matrix([[0, 0, 0, 1]]):
-            raise DHLabError(f"T is not a homogeneous transform: its last row is {T[3, :].tolist()[0]}, "
-                             "not [0, 0, 0, 1]. inv() uses the structure [Rᵀ, −Rᵀp] of a rigid transform.")
+            raise DHLabError(_("T is not a homogeneous transform: its last row is {row}, not [0, 0, 0, 1]. inv() "
+                               "uses the structure [Rᵀ, −Rᵀp] of a rigid transform.").format(
+                                   row=T[3, :].tolist()[0]))
         R, p = T[:3, :3], T[:3, 3]
         out = sp.eye(4)
         out[:3, :3] = R.T

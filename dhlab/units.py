@@ -22,6 +22,8 @@ import math
 import numpy as np
 import sympy as sp
 
+from .i18n import _
+
 __all__ = ["deg2rad", "rad2deg", "deg", "rad", "Angle", "AngleArray", "is_angle", "has_angle_mark"]
 
 
@@ -114,9 +116,9 @@ def _degrees_in(x, what: str, full_turn: float):
     else:
         values = np.array(as_number(x, what))
     if values.size and np.abs(values).max() > MOST_TURNS * full_turn:
-        raise _error(f"{what} = {np.abs(values).max():g} is too large, more than {MOST_TURNS} full turns: "
-                     "no angle of a robot turns that far. Check the number (is it a length, or a value in the "
-                     "other unit?).")
+        raise _error(_("{what} = {value:g} is too large, more than {turns} full turns: no angle of a robot turns that "
+                       "far. Check the number (is it a length, or a value in the other unit?).").format(
+                           what=what, value=np.abs(values).max(), turns=MOST_TURNS))
     return values
 
 
@@ -130,9 +132,9 @@ def deg2rad(x):
     if isinstance(x, sp.Expr) and x.free_symbols:
         return x * sp.pi / 180
     if has_angle_mark(x):
-        raise _error(f"deg2rad(x): x = {_short(x)} is already in radians (it was made by deg2rad()): "
-                     "do not convert twice, use the value as it is.")
-    values = _degrees_in(x, "deg2rad(x): x (degrees)", 360.0)
+        raise _error(_("deg2rad(x): x = {x} is already in radians (it was made by deg2rad()): do not convert twice, "
+                       "use the value as it is.").format(x=_short(x)))
+    values = _degrees_in(x, _("deg2rad(x): x (degrees)"), 360.0)
     if values.ndim == 0:
         return Angle(math.radians(float(values)))
     return np.radians(values).view(AngleArray)
@@ -147,7 +149,7 @@ def rad2deg(x):
     """
     if isinstance(x, sp.Expr) and x.free_symbols:
         return x * 180 / sp.pi
-    values = _degrees_in(x, "rad2deg(x): x (radians)", 2 * math.pi)
+    values = _degrees_in(x, _("rad2deg(x): x (radians)"), 2 * math.pi)
     degrees = math.degrees(float(values)) if values.ndim == 0 else np.degrees(np.asarray(values, dtype=float))
     return float(degrees) if values.ndim == 0 else degrees
 
@@ -159,8 +161,8 @@ def _renamed(old: str, new):
 
     @functools.wraps(new)
     def old_name(x):
-        warnings.warn(f"dhlab.{old}() is renamed dhlab.{new.__name__}() (the name says the direction); "
-                      f"{old}() will be removed in the next release.", FutureWarning, stacklevel=2)
+        warnings.warn(_("dhlab.{old}() is renamed dhlab.{new}() (the name says the direction); {old}() will be "
+                        "removed in the next release.").format(old=old, new=new.__name__), FutureWarning, stacklevel=2)
         return new(x)
     old_name.__name__ = old
     old_name.__qualname__ = old

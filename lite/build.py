@@ -14,6 +14,10 @@ Every piece is pinned and checked, and nothing in the finished site points outsi
   checked against the sha256 that npm's ``pyodide-lock.json`` records for it.
 * The pure wheels sympy, mpmath, comm, ipywidgets and ipympl come from PyPI (lite/site-wheels.txt,
   hash-pinned); dhlab's own wheel is built from this checkout.
+* The JupyterLab extensions installed in the build venv are built in: ipywidgets', ipympl's and
+  jupyterlab-slideshow's (the lecture decks, offline), and the Spanish language pack
+  (lite/requirements.txt); the site also carries notebooks/es/ (the Spanish edition) and
+  notebooks/lecture_plans/ in folders of the same names.
 
 The site's ``pyodide-lock.json`` lists only what it ships, with ``imports`` and ``depends`` for
 the added wheels, so that a cell's ``import dhlab`` loads numpy, sympy, matplotlib, ipywidgets and
@@ -335,6 +339,12 @@ def stage_site():
     (STAGE / "files").mkdir()
     for notebook in notebooks:
         shutil.copy2(notebook, STAGE / "files" / notebook.name)
+    # the Spanish edition (notebooks/es/, made by dhlab.course.edition) and the lecture plans
+    # (notebook 1 links them), each in its folder as in notebooks/
+    for folder, pattern in [("es", "*.ipynb"), ("lecture_plans", "*.md")]:
+        for path in sorted((ROOT / "notebooks" / folder).glob(pattern)):
+            (STAGE / "files" / folder).mkdir(exist_ok=True)
+            shutil.copy2(path, STAGE / "files" / folder / path.name)
     assemble_pyodide(STAGE / "static" / "pyodide")
 
 

@@ -4,14 +4,17 @@ A deck is the notebook itself, cut into slides by each cell's
 ``metadata.slideshow.slide_type`` (the standard Jupyter slideshow metadata that
 jupyterlab-slideshow, RISE and nbconvert read):
 
-- ``slide`` / ``subslide`` start a new screen; ``fragment`` and ``-`` add to the
-  current one; ``skip`` and ``notes`` cells are not on screen in the deck (``notes``
+- ``slide`` / ``subslide`` start a new screen; ``fragment`` adds to the current one
+  on the next key press; a cell without a slide type (no ``slideshow`` key: what
+  JupyterLab's property inspector writes for "-") continues the current screen. The
+  literal ``"-"`` is refused: jupyterlab-slideshow 0.3.4 never shows such a cell
+  (measured in the browser; its presenter has no case for it); ``skip`` and ``notes`` cells are not on screen in the deck (``notes``
   are the lecturer's notes, ``skip`` is self-study text) but a student reading
   the notebook sees them as usual.
 - On one screen: at most ``MAX_WORDS`` words of prose (markdown outside math,
   code spans, HTML tags and link targets) and at most ``MAX_CODE_LINES`` lines
   of code whose source is shown (``metadata.jupyter.source_hidden`` hides it).
-- Every cell carries a slide type; the first cell starts a slide.
+- The first cell starts a slide.
 
 Run ``python tests/deck_rules.py notebooks/05_dh_convention.ipynb`` to list the
 screens with their word and code-line counts and every rule broken.
@@ -25,8 +28,8 @@ from pathlib import Path
 
 MAX_WORDS = 40
 MAX_CODE_LINES = 15
-TYPES = {"slide", "subslide", "fragment", "-", "skip", "notes"}
-ON_SCREEN = {"slide", "subslide", "fragment", "-"}
+TYPES = {"slide", "subslide", "fragment", "skip", "notes", None}     # None: continue the screen
+ON_SCREEN = {"slide", "subslide", "fragment", None}
 LECTURE_NOTEBOOKS = ["02_homogeneous_matrices", "03_robot_no_tan_elemental", "04_pr_mechanism_and_spaces",
                      "05_dh_convention", "06_dh_examples", "07_ssrms"]
 
@@ -56,7 +59,7 @@ def shown_code_lines(cell) -> int:
 
 
 def slide_type(cell) -> str | None:
-    return cell.get("metadata", {}).get("slideshow", {}).get("slide_type")
+    return cell.get("metadata", {}).get("slideshow", {}).get("slide_type") or None
 
 
 def screens(nb) -> list[dict]:
@@ -82,11 +85,15 @@ def problems(nb) -> list[str]:
     found = []
     for index, cell in enumerate(nb["cells"]):
         kind = slide_type(cell)
-        if kind not in TYPES:
-            found.append(f"cell {index} ({cell.get('id')}): slide_type {kind!r}, expected one of {sorted(TYPES)}")
+        if kind == "-":
+            found.append(f"cell {index} ({cell.get('id')}): slide_type '-' is never shown by jupyterlab-slideshow: "
+                         "delete the cell's 'slideshow' metadata instead (no key = continue the screen)")
+        elif kind not in TYPES:
+            found.append(f"cell {index} ({cell.get('id')}): slide_type {kind!r}, expected slide, subslide, "
+                         "fragment, skip, notes or none (continue the screen)")
     first = slide_type(nb["cells"][0]) if nb["cells"] else None
-    if first not in ("slide", "skip", "notes"):
-        found.append(f"cell 0: the first cell must start a slide (or be skip/notes), not {first!r}")
+    if first != "slide":
+        found.append(f"cell 0: the first cell must start a slide, not {first!r} (the deck treats it as one anyway)")
     for screen in screens(nb):
         where = f"screen at cell {screen['first']} ({screen['ids'][0]})"
         if screen["words"] > MAX_WORDS:

@@ -3,6 +3,7 @@ building the same DH tables. Runs when that toolbox is installed (``make bench R
 installs it); skipped otherwise."""
 import numpy as np
 import pytest
+import sympy as sp
 
 from dhlab import robots
 
@@ -11,9 +12,11 @@ rtb = pytest.importorskip("roboticstoolbox")
 
 def rtb_copy(robot):
     """The same DH table, link by link, as a Robotics Toolbox DHRobot."""
+    def num(v):     # a table entry as a number, the robot's parameters substituted
+        return float(v.subs({s: robot.params[str(s)] for s in v.free_symbols})) if isinstance(v, sp.Basic) else float(v)
+
     links = []
     for link in robot.links:
-        num = lambda v: robot._number(v, "link")
         if link.is_revolute:
             links.append(rtb.RevoluteDH(d=num(link.d), a=num(link.a), alpha=num(link.alpha), offset=num(link.offset)))
         else:

@@ -73,7 +73,7 @@ def test_deg_of_a_deg_value_is_refused(value):
 
 @pytest.mark.parametrize("value", [1e308, -1e308, [0.0, 1e308]])
 def test_rad_refuses_an_infinite_result(value):
-    with pytest.raises(DHLabError, match=r"rad\(x\): x .*too large"):
+    with pytest.raises(DHLabError, match=r"rad2deg\(x\): x .*too large"):
         rad2deg(value)
 
 

@@ -20,6 +20,7 @@ from dhlab.course.exercises_dh import (WRIST_Q_DEG, available, axis_relation, ch
                                 link_exercise_robot, parallel_pairs, printed_key_position, row_exercise_frames)
 from dhlab.course.exercises import Feedback
 from dhlab.transforms import Rx, Rz, dh_matrix, trans
+from nbmarks import checks_output, ignores_output
 
 NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
 ARM_TABLE = [("q1", 0.5, 0.2, -90), ("q2 - 90", 0, 0.5, 0), ("q3", 0, 0, -90), ("q4", 0.5, 0, 0)]
@@ -395,7 +396,7 @@ def _outputs(cells) -> str:
 
 
 def _checked_numbers(nb):
-    cells = [c for c in nb.cells if c.cell_type == "code" and "# NBVAL_CHECK_OUTPUT" in c.source]
+    cells = [c for c in nb.cells if checks_output(c)]
     return [float(m) for m in NUMBER.findall(_outputs(cells))]
 
 
@@ -485,7 +486,7 @@ def test_notebook_panels_are_not_compared_and_exercises_are_asked_before_answere
     nb = _notebook(name)
     for cell in nb.cells:
         if cell.cell_type == "code" and any("<dhlab" in o.get("data", {}).get("text/plain", "") for o in cell.outputs):
-            assert "# NBVAL_IGNORE_OUTPUT" in cell.source, f"{name}: a panel cell is compared:\n{cell.source[:80]}"
+            assert ignores_output(cell), f"{name}: a panel cell is compared:\n{cell.source[:80]}"
     checks = [i for i, c in enumerate(nb.cells) if c.cell_type == "code" and re.search(r"ex\d+\.check\(", c.source)]
     assert 2 <= len(checks) <= 4, f"{name}: {len(checks)} exercises"
     start = next(i for i, c in enumerate(nb.cells) if c.cell_type == "markdown" and c.source.startswith("## Exercises"))

@@ -195,3 +195,65 @@ def test_export_refuses_variants_without_the_release(tmp_path, capsys):
     assert export(["gradescope", "-o", str(tmp_path / "a.zip"), "--secret-file", str(secret)]) == 2
     assert "--release" in capsys.readouterr().err and not (tmp_path / "a.zip").exists()
     shutil.rmtree(tmp_path, ignore_errors=True)
+
+
+DAEMON = r'''import os, sys, time
+MARK, RESULTS = {mark!r}, {results!r}
+if os.fork() == 0:                       # a daemon: out of the kernel's group and parent, it waits
+    os.setsid()
+    if os.fork() == 0:
+        import glob
+        null = os.open(os.devnull, os.O_RDWR)
+        for fd in (0, 1, 2):
+            os.dup2(null, fd)
+        for _ in range(600):             # for a minute: keep saying it lives, rewrite any results.json
+            with open(os.path.join(MARK, f"alive-{{os.getpid()}}"), "w") as f:
+                f.write(str(time.time()))
+            for path in glob.glob(RESULTS):
+                try:
+                    open(path, "w").write('{{"score": 100, "output": "forged", "tests": []}}')
+                except OSError:
+                    pass
+            time.sleep(0.05)
+    os._exit(0)
+print("daemon started")'''
+
+
+def _with_cell(source: Path, out: Path, code: str) -> Path:
+    nb = json.loads(source.read_text(encoding="utf-8"))
+    nb["cells"].append({"cell_type": "code", "execution_count": None, "id": "daemon", "metadata": {},
+                        "outputs": [], "source": code})
+    out.write_text(json.dumps(nb), encoding="utf-8")
+    return out
+
+
+def test_a_daemon_the_notebook_forks_cannot_rewrite_the_result(puma, tmp_path):
+    mark = Path(tempfile.mkdtemp(prefix="dhlab-daemon-"))
+    mark.chmod(0o1777)                   # the kernel's user may write there: the daemon's proof of life
+    try:
+        code = DAEMON.format(mark=str(mark), results=str(puma.folder / "autograder-*" / "results" / "results.json"))
+        out = puma.run([_with_cell(SUBMISSIONS / "valid_alternative.ipynb", tmp_path / "daemon.ipynb", code)])
+        _valid(out.results)
+        assert out.results["score"] == 10 and "forged" not in json.dumps(out.results)
+        marks = list(mark.glob("alive-*"))
+        assert marks, "the daemon never ran: the test proves nothing"
+        before = {p: p.read_text() for p in marks}
+        import time
+        time.sleep(0.5)                  # a daemon still alive would have written again
+        assert {p: p.read_text() for p in mark.glob("alive-*")} == before
+    finally:
+        shutil.rmtree(mark, ignore_errors=True)
+
+
+def test_a_kernel_that_would_run_as_root_is_refused(puma, tmp_path):
+    """As root with no sandbox user (here: exported with --isolation none) the autograder grades
+    nothing: no results.json (an autograder failure), never a score the notebook could forge."""
+    if os.geteuid() != 0:
+        pytest.skip("Gradescope's case: the autograder runs as root")
+    import copy
+    assert export(["gradescope", "-o", str(tmp_path / "none.zip"), "--isolation", "none", *LIMITS]) == 0
+    unsafe = copy.copy(puma)
+    unsafe.zip = tmp_path / "none.zip"   # the same installed wheel, the options of this zip
+    out = unsafe.run([SUBMISSIONS / "valid_alternative.ipynb"])
+    assert out.results is None and out.returncode != 0, out.log[-2000:]
+    assert "refused to run the student's notebook as root" in out.log and "not the student's fault" in out.log

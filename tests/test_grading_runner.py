@@ -132,12 +132,12 @@ FULL = [2, 3, 5]
     ("alice/ps8/puma", FULL, "ok"),
     ("student_blank", [0, 0, 0], "not answered"),
     ("mistake_part1", [1.5, 3, 5], "ok"),
-    ("mistake_part2", [2, 3 * 6 / 7, 5], "ok"),          # link 5 is in a valid frame (x5 turned over)
+    ("mistake_part2", [2, 3 * 5 / 7, 5], "ok"),   # link 3 in frame 2; link 5 in a valid frame, not the one T1…T5 build
     ("mistake_part3", [2, 3, 5 * 5 / 7], "ok"),
     ("slip_alpha1", [2, 3, 5 * 6 / 7], "ok"),
     ("slip_alpha3", [2, 3, 5 * 6 / 7], "ok"),
     ("slip_theta4_offset", [2, 3, 5 * 6 / 7], "ok"),
-    ("mixed_valid_frames", FULL, "ok"),
+    ("mixed_valid_frames", [2, 3 * 3 / 7, 5], "ok"),    # links 1, 2, 4, 6 not in the frames its T_k build
     ("numeric_types", FULL, "ok"),
     ("big_saved_outputs", FULL, "ok"),
     ("Ana María", [2, 3, 5 * 5 / 7], "ok"),

@@ -6,7 +6,7 @@ outputs are what the code prints today). They check that:
 * every decimal number written in a notebook's text (outside the exercise statements, whose numbers are
   data) appears, to the digits shown, in that notebook's code outputs — for every notebook of the course;
 * the key numbers of the seeds' cases (``seed_cases.json``) appear in the outputs of cells marked
-  ``# NBVAL_CHECK_OUTPUT``, so that a change in the maths fails the suite;
+  the cell tag ``nbval-check-output``, so that a change in the maths fails the suite;
 * every erratum of seed 004 (and the others met in these notebooks) is stated where it arises;
 * cells that show a live panel do not have their (random) widget output compared;
 * every notebook opens with what the student will be able to do and ends with a recap and where to go
@@ -20,6 +20,7 @@ from pathlib import Path
 
 import nbformat
 import pytest
+from nbmarks import checks_output, ignores_output
 
 NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
 NAMES = sorted(p.stem for p in NOTEBOOKS.glob("[0-9][0-9]_*.ipynb"))      # every notebook of the course
@@ -48,9 +49,9 @@ def numbers(text):
 
 
 def checked_numbers(nb):
-    """The numbers printed by the cells marked NBVAL_CHECK_OUTPUT, in order."""
+    """The numbers printed by the cells tagged nbval-check-output, in order."""
     return numbers("\n".join(output_text(c) for c in nb.cells
-                             if c.cell_type == "code" and "# NBVAL_CHECK_OUTPUT" in c.source))
+                             if checks_output(c)))
 
 
 def contains_sequence(values, expected, tol=1e-6) -> bool:
@@ -144,7 +145,7 @@ def test_seed_003_inverse_kinematics_in_notebook_4(notebooks, seed_cases, case_i
 def test_seed_003_unreachable_target_in_notebook_4(notebooks, seed_cases):
     x, y = seed_cases["003_PR_ik_unreachable"]["target_position"]
     text = "\n".join(output_text(c) for c in notebooks["04_pr_mechanism_and_spaces"].cells
-                     if c.cell_type == "code" and "# NBVAL_CHECK_OUTPUT" in c.source)
+                     if checks_output(c))
     line = next(line for line in text.splitlines() if f"({x}, {y})" in line)
     assert "no solution" in line and "nan" not in line.lower()
 
@@ -190,7 +191,7 @@ def test_panel_cells_ignore_their_widget_output(notebooks, name):
         shows_widget = any("application/vnd.jupyter.widget-view+json" in o.get("data", {}) or
                            "<dhlab" in o.get("data", {}).get("text/plain", "") for o in cell.outputs)
         if shows_widget:
-            assert "# NBVAL_IGNORE_OUTPUT" in cell.source, f"{name}: a panel cell is compared:\n{cell.source[:80]}"
+            assert ignores_output(cell), f"{name}: a panel cell is compared:\n{cell.source[:80]}"
 
 
 @pytest.mark.parametrize("name", BASICS)

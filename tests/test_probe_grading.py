@@ -12,7 +12,7 @@ import pytest
 
 from dhlab import assignment as A
 from dhlab.grading import answers as ans
-from dhlab.grading import checks, cli, gradebook, part3
+from dhlab.grading import checks, cli, gradebook, part3, rows
 from dhlab.grading.generate import SOURCE, student_notebook
 
 q1, q2, q3, q4, q5, q6 = A.joint_variables(6)
@@ -72,7 +72,7 @@ def test_a_grader_exception_gives_a_row_that_says_not_graded(tmp_path):
 
 
 def test_a_run_the_grader_failed_on_gives_a_row_that_says_not_graded(tmp_path, monkeypatch):
-    monkeypatch.setattr(cli, "run_submission", lambda *a, **k: {"grader_error": KERNEL_DIED, "errors": []})
+    monkeypatch.setattr(rows, "run_submission", lambda *a, **k: {"grader_error": KERNEL_DIED, "errors": []})
     row = cli.grade_submission(_staged(tmp_path), _options())
     _not_graded(row)
     assert row["status"] == f"grader error: {KERNEL_DIED} (not the student's fault: grade again with --resume)"
@@ -112,7 +112,7 @@ def test_a_kernel_that_died_in_a_cell_of_the_assignment_does_not_blame_the_stude
     cells = gradebook.Cells(_numbered(nb))
     figure = next(k for k, c in enumerate(nb["cells"], 1) if "".join(c["source"]) == "my_robot_figure(globals())")
     status = gradebook.status_text({"kernel_died": [figure]}, report_answered=True, cells=cells)
-    assert status.startswith("kernel died in cell 11 (a cell of the assignment: \"my_robot_figure(globals())\"")
+    assert status.startswith("kernel died in cell 12 (a cell of the assignment: \"my_robot_figure(globals())\"")
     assert "run again without it" not in status and status.endswith("grade again with --resume)")
     assert gradebook.grade_again({"status": status})
     answer = next(k for k, c in enumerate(nb["cells"], 1) if "".join(c["source"]).startswith("# Part 2"))
@@ -186,7 +186,7 @@ def test_a_syntax_error_in_the_part2_answer_cell_says_not_read(tmp_path, monkeyp
     ns["chain"] = ns["T1"] @ ns["T2"] @ ns["T3"] @ ns["T4"] @ ns["T5"] @ ns["T6"]
     raw = {name: ans.to_plain(ns[name]) for name in ans.ANSWER_NAMES if name in ns and name != "link_points"}
     run = {"errors": [[11, "SyntaxError", SYNTAX]], "answers_json": ans.encode_json(raw)}
-    monkeypatch.setattr(cli, "run_submission", lambda *a, **k: dict(run))
+    monkeypatch.setattr(rows, "run_submission", lambda *a, **k: dict(run))
     row = cli.grade_submission(_staged(tmp_path), _options())
     assert (row["score"], row["part2_links"]) == ("7", "0")
     assert row["status"] == ("error in cell 7 (SyntaxError on line 14: closing parenthesis '}' does not match "

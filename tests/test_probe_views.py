@@ -47,8 +47,8 @@ def test_stepthrough_takes_sympy_degrees():
 @pytest.mark.parametrize("options, match", [
     (dict(d=deg2rad(30)), r"d is a length, but you gave an angle"),                 # L3
     (dict(a=deg2rad(30)), r"a is a length, but you gave an angle"),
-    (dict(theta_deg=deg2rad(90)), r"theta_deg = deg\(90\) is already in radians"),   # L4
-    (dict(alpha_deg=deg2rad(90)), r"alpha_deg = deg\(90\) is already in radians"),
+    (dict(theta_deg=deg2rad(90)), r"theta_deg = deg2rad\(90\) is already in radians"),   # L4
+    (dict(alpha_deg=deg2rad(90)), r"alpha_deg = deg2rad\(90\) is already in radians"),
     (dict(theta_deg=1e300), r"theta_deg = 1e\+300° is more than a full turn.*degrees"),   # L5
     (dict(alpha_deg=-400), r"alpha_deg = -400° is more than a full turn"),
     (dict(d=1e308), r"^d = 1e\+308 is too large for a length"),                 # L6

@@ -424,13 +424,29 @@ def _lost(report) -> list:
     return [(part.key, item.label) for part in report.parts for item in part.items if not item.ok]
 
 
+def _links_not_in_their_frames(robot, ns, frames) -> list:
+    """The labels of the links drawn (in ``frames``) where the chain of ``ns``'s T_k does not put
+    them at home (x_n turned by θ_n + 90°: the gripper): the ground truth of part 2."""
+    from dhlab.grading.answers import answers_from_namespace
+    from dhlab.grading.part3 import matrix
+    F, out = np.eye(4), []
+    for k, row in enumerate(answers_from_namespace(ns, robot.n).T[:robot.n], start=1):
+        F = F @ matrix(row)
+        G = frames[k]
+        if np.abs((robot.world_points(k) - G[:3, 3]) @ G[:3, :3] @ F[:3, :3].T + F[:3, 3]
+                  - robot.world_points(k)).max() > 1e-6:
+            out.append(f"link {k} ({robot.link_names[k]})")
+    return out
+
+
 @pytest.mark.parametrize("key", family_names())
 def test_each_mistake_costs_exactly_its_item(key):
     """Every single slip, in a variant's reference solution and in a random valid one: when it
     changes what the answer says (the chain moves unlike the robot, a fact of part 1 or a
     link's points), exactly one item is lost, and the score drops by that item's share of its
-    part; a change that leaves a valid answer (e.g. θ + 180° on a frame whose x is free) keeps
-    full marks. Ground truth from the robot's motion, not from the grader."""
+    part; a change that leaves a valid chain (e.g. θ + 90° on the last frame, whose x is free)
+    costs only the link that is no longer drawn in its frame (part 2), if any. Ground truth from
+    the robot's motion and the links' points, not from the grader."""
     rng = np.random.default_rng(31)
     counted = 0
     for seed in (2, 3):                                   # the reference solution of one, a random one of the other
@@ -449,8 +465,9 @@ def test_each_mistake_costs_exactly_its_item(key):
             for part, what, changed in cases:
                 report = _report(changed, robot)
                 lost = _lost(report)
-                if part is None:                          # still a valid answer
-                    assert not lost, (key, seed, what, report.text())
+                if part is None:                          # still a valid chain, but its frames may have moved:
+                    moved = _links_not_in_their_frames(robot, changed, frames)
+                    assert [k for _, k in lost] == moved and len(moved) <= 1, (key, seed, what, report.text())
                     continue
                 counted += 1
                 assert len(lost) == 1 and lost[0][0] == part, (key, seed, what, report.text())

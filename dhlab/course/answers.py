@@ -30,6 +30,8 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from ..i18n import N_, _
+
 __all__ = ["Refused", "is_unanswered", "canon", "Sampler", "close", "to_sympy_matrix", "to_vector",
            "typed_decimals", "rounding_slack"]
 
@@ -130,50 +132,56 @@ def close(a, b, tol, slack: float = 0.0) -> bool:
 
 # --- one entry -------------------------------------------------------------------------------------------
 _UNEVALUATED = (sp.Integral, sp.Derivative, sp.Limit, sp.Sum, sp.Product)
+NOT_FINITE = N_("{where} is {v}: not a finite number (NaN or infinity). A pose has finite entries: look at what "
+                "produced it (an arcsin of more than 1? a division by 0?).")
+TOO_LARGE = N_("{where} is {v}, far too large to be a length or an angle here.")
+NOT_AN_EXPRESSION = N_("{v} is not a number or a sympy expression ({where}).")
 
 
 def _entry(v, where: str) -> sp.Expr:
     """One number or expression of an answer, as sympy, or a :class:`Refused` saying why not."""
     if v is None or isinstance(v, (bool, np.bool_)):
-        raise Refused(f"{v!r} is not a number ({where}).")
+        raise Refused(_("{v!r} is not a number ({where}).").format(v=v, where=where))
     if isinstance(v, str):
-        raise Refused(f"{v[:30]!r} is text, not a number ({where}): write the number itself, without quotes.")
+        raise Refused(_("{text!r} is text, not a number ({where}): write the number itself, without quotes.").format(
+            text=v[:30], where=where))
     if isinstance(v, (list, tuple, dict, set, np.ndarray, sp.MatrixBase)):
-        raise Refused(f"{where} is itself a list ({_short(v)}): one number is expected there.")
+        raise Refused(_("{where} is itself a list ({v}): one number is expected there.").format(where=where, v=_short(v)))
     if isinstance(v, (float, complex, np.floating, np.complexfloating)) and not np.isfinite(v):
-        raise Refused(f"{where} is {v!r}: not a finite number (NaN or infinity). A pose has finite entries: "
-                      "look at what produced it (an arcsin of more than 1? a division by 0?).")
+        raise Refused(_(NOT_FINITE).format(where=where, v=repr(v)))
     if isinstance(v, numbers.Integral) and abs(int(v)) > BIGGEST:
-        raise Refused(f"{where} is {_short(v)}, far too large to be a length or an angle here.")
+        raise Refused(_(TOO_LARGE).format(where=where, v=_short(v)))
     try:
         e = sp.sympify(v, strict=True)
     except Exception:                      # any object sympy cannot read (its own methods may raise anything)
-        raise Refused(f"{_short(v)} is not a number or a sympy expression ({where}).") from None
+        raise Refused(_(NOT_AN_EXPRESSION).format(v=_short(v), where=where)) from None
     if not isinstance(e, sp.Expr):
-        raise Refused(f"{_short(v)} is not a number or a sympy expression ({where}).")
+        raise Refused(_(NOT_AN_EXPRESSION).format(v=_short(v), where=where))
     if e.has(sp.zoo, sp.oo, -sp.oo) or (e.is_number and e.has(sp.nan)) or e is sp.nan:
-        raise Refused(f"{where} is {sp.sstr(e)}: an infinite or undefined value (a division by zero, "
-                      "a tan of 90°, …?). A pose has finite entries.")
+        raise Refused(_("{where} is {value}: an infinite or undefined value (a division by zero, a tan of 90°, …?). "
+                        "A pose has finite entries.").format(where=where, value=sp.sstr(e)))
     undefined = sorted({str(f.func) for f in e.atoms(AppliedUndef)})
     if undefined:
-        raise Refused(f"{where} uses {', '.join(undefined)}(…), a function sympy does not know: write it "
-                      "with sp.cos, sp.sin, sp.sqrt, … and the symbols of the exercise.")
+        raise Refused(_("{where} uses {functions}(…), a function sympy does not know: write it with sp.cos, "
+                        "sp.sin, sp.sqrt, … and the symbols of the exercise.").format(
+                            where=where, functions=", ".join(undefined)))
     if e.atoms(*_UNEVALUATED):
         kind = type(next(iter(e.atoms(*_UNEVALUATED)))).__name__
-        raise Refused(f"{where} is an unevaluated {kind}: call .doit() on it, or write the result.")
+        raise Refused(_("{where} is an unevaluated {kind}: call .doit() on it, or write the result.").format(
+            where=where, kind=kind))
     if not e.free_symbols:
         try:
             value = complex(sp.N(e))
         except (TypeError, ValueError, OverflowError):
-            raise Refused(f"{where} ({sp.sstr(e)[:30]}) has no numeric value.") from None
+            raise Refused(_("{where} ({value}) has no numeric value.").format(where=where, value=sp.sstr(e)[:30])) \
+                from None
         if not (math.isfinite(value.real) and math.isfinite(value.imag)):
-            raise Refused(f"{where} is {_short(v)}: not a finite number (NaN or infinity). A pose has "
-                          "finite entries: look at what produced it (an arcsin of more than 1? a division by 0?).")
+            raise Refused(_(NOT_FINITE).format(where=where, v=_short(v)))
         if abs(value.imag) > 1e-12:
-            raise Refused(f"{where} is complex ({_short(v)}): positions and angles are real numbers "
-                          "(a square root or arcsin of something out of range?).")
+            raise Refused(_("{where} is complex ({v}): positions and angles are real numbers (a square root or "
+                            "arcsin of something out of range?).").format(where=where, v=_short(v)))
         if abs(value.real) > BIGGEST:
-            raise Refused(f"{where} is {_short(v)}, far too large to be a length or an angle here.")
+            raise Refused(_(TOO_LARGE).format(where=where, v=_short(v)))
     return e
 
 
@@ -181,7 +189,7 @@ def _short(v) -> str:
     try:
         text = sp.sstr(v) if isinstance(v, sp.Basic) else repr(v)
     except Exception:                      # a repr that fails (too deep, or a broken __repr__)
-        text = f"<a {type(v).__name__} that cannot be printed>"
+        text = _("<a {type} that cannot be printed>").format(type=type(v).__name__)
     return text if len(text) <= 40 else text[:37] + "…"
 
 
@@ -191,14 +199,15 @@ def _rows(x):
         return x.tolist()
     if isinstance(x, np.ndarray):
         if x.ndim != 2:
-            raise Refused(f"it has {x.ndim} dimension{'s' if x.ndim != 1 else ''}")
+            raise Refused((_("it has {n} dimension") if x.ndim == 1 else _("it has {n} dimensions")).format(n=x.ndim))
         return x.tolist()
     if not isinstance(x, (list, tuple)) or not all(isinstance(r, (list, tuple, np.ndarray, sp.MatrixBase))
                                                    for r in x) or not x:
-        raise Refused("it is not a list of rows")
+        raise Refused(_("it is not a list of rows"))
     rows = [list(r) if not isinstance(r, sp.MatrixBase) else list(r) for r in x]
     if len({len(r) for r in rows}) != 1:
-        raise Refused(f"its rows have different lengths ({', '.join(str(len(r)) for r in rows)})")
+        raise Refused(_("its rows have different lengths ({lengths})").format(
+            lengths=", ".join(str(len(r)) for r in rows)))
     return rows
 
 
@@ -206,16 +215,16 @@ def _rows(x):
 def to_sympy_matrix(x, name: str) -> sp.Matrix:
     """A matrix answer as a sympy Matrix, or :class:`Refused`."""
     if isinstance(x, str):
-        raise Refused(f"{name} is text ({x[:30]!r}): give a matrix, e.g. sp.Matrix([[...], ...]) "
-                      "or np.array([[...], ...]).")
+        raise Refused(_("{name} is text ({text!r}): give a matrix, e.g. sp.Matrix([[...], ...]) or "
+                        "np.array([[...], ...]).").format(name=name, text=x[:30]))
     try:
         rows = _rows(x)
     except Refused as why:
-        raise Refused(f"{name} must be a matrix: rows of equal length, e.g. "
-                      f"sp.Matrix([[...], ...]) or np.array([[...], ...]) ({why}).") from None
+        raise Refused(_("{name} must be a matrix: rows of equal length, e.g. sp.Matrix([[...], ...]) or "
+                        "np.array([[...], ...]) ({why}).").format(name=name, why=why)) from None
     if not rows[0]:
-        raise Refused(f"{name} is empty.")
-    entries = [[_entry(v, f"row {i + 1}, column {j + 1}") for j, v in enumerate(row)]
+        raise Refused(_("{name} is empty.").format(name=name))
+    entries = [[_entry(v, _("row {i}, column {j}").format(i=i + 1, j=j + 1)) for j, v in enumerate(row)]
                for i, row in enumerate(rows)]
     return sp.Matrix(entries)
 
@@ -228,8 +237,8 @@ def _flatten(x, depth: int = 0) -> list:
         return list(x.ravel()) if x.ndim else [x.item()]
     if isinstance(x, (list, tuple)):
         if depth > MAX_NESTING:
-            raise Refused(f"your answer is lists inside lists more than {MAX_NESTING} deep: give the numbers "
-                          "as a flat list [a, b, …] (or rows of a matrix).")
+            raise Refused(_("your answer is lists inside lists more than {n} deep: give the numbers as a flat "
+                            "list [a, b, …] (or rows of a matrix).").format(n=MAX_NESTING))
         out = []
         for v in x:
             if isinstance(v, (list, tuple, np.ndarray, sp.MatrixBase)):
@@ -238,7 +247,8 @@ def _flatten(x, depth: int = 0) -> list:
                 out.append(v)
         return out
     if isinstance(x, (dict, set)):
-        raise Refused(f"a {type(x).__name__} is not a list of numbers: give [a, b, …] in the order asked.")
+        raise Refused(_("a {type} is not a list of numbers: give [a, b, …] in the order asked.").format(
+            type=type(x).__name__))
     return [x]
 
 
@@ -258,22 +268,23 @@ def to_vector(x, name: str, n: int):
     """An answer of ``n`` numbers as a float array, or a list of sympy expressions if it has symbols;
     or :class:`Refused` saying what is wrong (the count, a homogeneous 4-vector, a whole pose, …)."""
     if isinstance(x, str):
-        raise Refused(f"{name} is text ({x[:30]!r}): give {'a number' if n == 1 else f'{n} numbers'}.")
+        raise Refused((_("{name} is text ({text!r}): give a number.") if n == 1 else
+                       _("{name} is text ({text!r}): give {n} numbers.")).format(name=name, text=x[:30], n=n))
     items = _flatten(x)
     if len(items) != n:
         raise Refused(_count_problem(x, items, name, n))
-    exprs = [_entry(v, f"component {k + 1}" if n > 1 else "it") for k, v in enumerate(items)]
+    exprs = [_entry(v, _("component {k}").format(k=k + 1) if n > 1 else _("it")) for k, v in enumerate(items)]
     if any(e.free_symbols for e in exprs):
         return exprs
     return np.array([complex(sp.N(e)).real for e in exprs], dtype=float)
 
 
 def _count_problem(x, items, name, n) -> str:
-    what = "one number" if n == 1 else f"{n} numbers"
     shape = _shape_of(x)
     if shape == (4, 4) and n in (2, 3):
-        return (f"{name} is a 4×4 matrix, a whole pose: the position is its last column, T[:3, 3]"
-                + (" (and here only x and y)." if n == 2 else "."))
+        return (_("{name} is a 4×4 matrix, a whole pose: the position is its last column, T[:3, 3] (and here "
+                  "only x and y).") if n == 2 else
+                _("{name} is a 4×4 matrix, a whole pose: the position is its last column, T[:3, 3].")).format(name=name)
     values = []
     for v in items:
         try:
@@ -281,15 +292,17 @@ def _count_problem(x, items, name, n) -> str:
         except Exception:                  # not a plain number: it cannot be the trailing 1 or 0
             values.append(None)
     if len(items) == n + 1 and n == 3 and values[-1] == 1.0:
-        return ("your answer has 4 numbers; a position has 3: drop the trailing 1 of the homogeneous form.")
+        return _("your answer has 4 numbers; a position has 3: drop the trailing 1 of the homogeneous form.")
     if len(items) == 4 and n == 2 and values[-1] == 1.0 and values[-2] == 0.0:
-        return ("your answer has 4 numbers (x, y, 0, 1), the homogeneous form of a point in space: drop the "
-                "trailing 1, and z too: the mechanism is planar, give (x, y).")
+        return _("your answer has 4 numbers (x, y, 0, 1), the homogeneous form of a point in space: drop the "
+                 "trailing 1, and z too: the mechanism is planar, give (x, y).")
     if n == 2 and len(items) == 3 and values[-1] == 0.0:
-        return "your answer has 3 numbers (x, y, 0); the mechanism is planar: give (x, y), without z."
+        return _("your answer has 3 numbers (x, y, 0); the mechanism is planar: give (x, y), without z.")
     if n == 3 and len(items) == 2:
-        return f"{name} must be 3 numbers; you gave 2: a position has 3 coordinates (x, y, z), z included."
-    return f"{name} must be {what}; you gave {len(items)}."
+        return _("{name} must be 3 numbers; you gave 2: a position has 3 coordinates (x, y, z), z included.").format(
+            name=name)
+    return (_("{name} must be one number; you gave {k}.") if n == 1 else
+            _("{name} must be {n} numbers; you gave {k}.")).format(name=name, n=n, k=len(items))
 
 
 # --- the decimals the student typed --------------------------------------------------------------------------

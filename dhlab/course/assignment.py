@@ -303,7 +303,8 @@ def check_part(part: int, namespace) -> Feedback:
     (``namespace``: pass ``globals()``), against the robot of the assignment
     (:func:`current_robot`). The answers are read by name — n_links, n_joints,
     joint_types, x_cases (part 1), link_points (part 2), T1…Tn and chain (part 3) —
-    exactly as the grader reads them."""
+    exactly as the grader reads them, and checked by the same functions: part 2 in
+    the frames the student's T1…Tn build (so its scored cell comes after part 3)."""
     part = _inputs.part_number(part)
     if not hasattr(namespace, "keys"):
         raise DHLabError("pass the notebook's variables: check_part(1, globals()).")
@@ -311,12 +312,15 @@ def check_part(part: int, namespace) -> Feedback:
     answers = _answers.answers_from_namespace(namespace, ref.n)     # exactly as the grader reads them
     if part == 1:
         return Feedback(_checks.check_part1(answers, ref))
+    analysis = _checks._analyse(answers, ref)       # part 2 is checked in the frames of the student's T_k
     if part == 2:
-        return Feedback(_checks.check_part2(answers, ref=ref))
-    analysis = _checks._analyse(answers, ref)
-    part3 = _checks.check_part3(answers, analysis)
-    notes = [n for n in _checks.check_part2(answers, analysis).notes if n.startswith("(not scored)")]
-    return Feedback(part3, note="\n".join(notes))
+        return Feedback(_checks.check_part2(answers, analysis))
+    part2 = _checks.check_part2(answers, analysis)
+    moved = [item.label.split(" (")[0] for item in part2.items
+             if item.ok is False and item.message.startswith("drawn in a valid DH frame")]
+    note = (f"(part 2 again, in the frames these T1…T{ref.n} build: {', '.join(moved)} not drawn in "
+            f"{'them' if len(moved) > 1 else 'it'}; see part 2's score below)" if moved else "")
+    return Feedback(_checks.check_part3(answers, analysis), note=note)
 
 
 def check_part1(namespace) -> Feedback:

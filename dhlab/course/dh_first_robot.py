@@ -10,6 +10,7 @@ to point down the quill.
 from __future__ import annotations
 
 from ..dh import DHRobot
+from ..i18n import _
 from .figures_dh_examples import frame_pairs_figure
 
 __all__ = ["FIRST_ROBOT_ROWS", "FIRST_ROBOT_LENGTHS", "DRAWN_Q", "first_robot", "first_robot_figure"]
@@ -25,7 +26,7 @@ DRAWN_Q = (0.0, 0.0, 0.15, 0.0)        # the pose drawn: q1 = q2 = q4 = 0, the q
 
 def first_robot() -> DHRobot:
     """The SCARA of notebook 5's first pass through rules 10–13 (standard DH, lengths in metres)."""
-    return DHRobot.from_table(FIRST_ROBOT_ROWS, name="SCARA (first robot)", params=FIRST_ROBOT_LENGTHS)
+    return DHRobot.from_table(FIRST_ROBOT_ROWS, name=_("SCARA (first robot)"), params=FIRST_ROBOT_LENGTHS)
 
 
 def first_robot_figure(robot=None):

@@ -24,6 +24,7 @@ as such ("this table is in modified DH (Craig): …"), with what the course's st
 """
 from __future__ import annotations
 
+from ..i18n import N_, _
 from ..validation import DHLabError
 from .exercises import Exercise
 from .exercises_dh_common import ANGLE_TOL, Relation, axis_relation
@@ -45,47 +46,47 @@ __all__ = [
 
 # --- the exercises of notebooks 5-7, with their hints ---------------------------------------------------
 def _rows_hint_arm():
-    return ["Draw x1 first: z0 and z1 are skew, so x1 is their common normal, from z0 towards z1. "
-            "Then d1, a1 and α1 follow from rules 11-13.",
-            "z1 ∥ z2: α2 is 0° or 180°; x2 runs along a common normal from z1 to z2. At q = 0, x1 and x2 "
-            "are not parallel, so θ2 has an offset.",
-            "Frame 4 sits at the star, with z4 along z3 (rule 9)."]
+    return [N_("Draw x1 first: z0 and z1 are skew, so x1 is their common normal, from z0 towards z1. "
+               "Then d1, a1 and α1 follow from rules 11-13."),
+            N_("z1 ∥ z2: α2 is 0° or 180°; x2 runs along a common normal from z1 to z2. At q = 0, x1 and x2 "
+               "are not parallel, so θ2 has an offset."),
+            N_("Frame 4 sits at the star, with z4 along z3 (rule 9).")]
 
 
 _COURSE = {
-    "5.1": lambda: Exercise("5.1", "the case of each x_i", check_x_cases, [
-        "Look at z_(i−1) and z_i (the axes of joints i and i+1): do they meet, are they parallel, or neither?",
-        "Skew lines are not parallel and never meet: their common normal is unique (case 3)."]),
-    "5.2": lambda: Exercise("5.2", "a DH row from two frames", check_dh_row, [
-        "Read the figure, one motion at a time: θ turns about z_(i−1) until x_(i−1) points along x_i; "
-        "d is how far along z_(i−1) the foot of x_i (where x_i crosses z_(i−1)) is from O_(i−1).",
-        "a is how far O_i is from that foot, measured along x_i; α turns about x_i until z_(i−1) "
-        "points along z_i (right-hand rule for the signs).",
-        "Give the angles in degrees."]),
-    "5.3": lambda: Exercise("5.3", "the table of the 4-axis arm", lambda rows: check_table(rows, "arm"),
+    "5.1": lambda: Exercise("5.1", N_("the case of each x_i"), check_x_cases, [
+        N_("Look at z_(i−1) and z_i (the axes of joints i and i+1): do they meet, are they parallel, or neither?"),
+        N_("Skew lines are not parallel and never meet: their common normal is unique (case 3).")]),
+    "5.2": lambda: Exercise("5.2", N_("a DH row from two frames"), check_dh_row, [
+        N_("Read the figure, one motion at a time: θ turns about z_(i−1) until x_(i−1) points along x_i; "
+           "d is how far along z_(i−1) the foot of x_i (where x_i crosses z_(i−1)) is from O_(i−1)."),
+        N_("a is how far O_i is from that foot, measured along x_i; α turns about x_i until z_(i−1) "
+           "points along z_i (right-hand rule for the signs)."),
+        N_("Give the angles in degrees.")]),
+    "5.3": lambda: Exercise("5.3", N_("the table of the 4-axis arm"), lambda rows: check_table(rows, "arm"),
                             _rows_hint_arm()),
-    "6.1": lambda: Exercise("6.1", "¹A₂ by hand", lambda M: check_link_matrix(M, 2), [
-        "Put θ2 = q2 + 90° and α2 = −90° into the general A of rule 14.",
-        "cos(q2 + 90°) = −S2, sin(q2 + 90°) = C2, cos(−90°) = 0, sin(−90°) = −1."]),
-    "6.2": lambda: Exercise("6.2", "the wrist centre", check_wrist_centre, [
-        "The axes of joints 4, 5 and 6 meet in one point, O4 = O5: the wrist centre.",
-        "From T = robot.fk(q): p_w = p − l4·a, with a = T[:3, 2] and l4 = 4."]),
-    "6.3": lambda: Exercise("6.3", "another valid table of the R-P-P-R robot",
+    "6.1": lambda: Exercise("6.1", N_("¹A₂ by hand"), lambda M: check_link_matrix(M, 2), [
+        N_("Put θ2 = q2 + 90° and α2 = −90° into the general A of rule 14."),
+        N_("cos(q2 + 90°) = −S2, sin(q2 + 90°) = C2, cos(−90°) = 0, sin(−90°) = −1.")]),
+    "6.2": lambda: Exercise("6.2", N_("the wrist centre"), check_wrist_centre, [
+        N_("The axes of joints 4, 5 and 6 meet in one point, O4 = O5: the wrist centre."),
+        N_("From T = robot.fk(q): p_w = p − l4·a, with a = T[:3, 2] and l4 = 4.")]),
+    "6.3": lambda: Exercise("6.3", N_("another valid table of the R-P-P-R robot"),
                             lambda rows: check_table(rows, "seed002_4dof", different=True), [
-        "z1 and z2 intersect: x2 = ±(z1 × z2). Choose the other sign than the slide.",
-        "Turning x2 by 180° changes θ2 by 180° and the sign of α2; the next row's θ3 then changes by 180°.",
-        "Or use note 002-n2: joint 3 is prismatic, so the line z2 may be moved sideways (a2 ≠ 0), "
-        "if row 3 moves the origin back (a3 = −a2)."]),
-    "7.1": lambda: Exercise("7.1", "the THList slot of each joint", check_thlist_slots, [
-        "configurarTH pushes two matrices per link (THz, then THx), starting with the base's pair.",
-        "Key '1' (code 97) writes THList[2] for joint 1."]),
-    "7.2": lambda: Exercise("7.2", "which joint axes stay parallel", check_parallel_pairs, [
-        "Not only consecutive joints: if z2 ∥ z3 and z3 ∥ z4, then z2 ∥ z4.",
-        "A pair that is parallel at θ = 0 must stay parallel when any joint turns."]),
-    "7.3": lambda: Exercise("7.3", "where the printed key handler sends the arm", check_key_jump, [
-        "As printed, the key of joint k sets THList[2k] = THx, and THx is the identity at that moment.",
-        "Both slots stay overwritten: multiply the 14 factors with Tz[θ2, 6] and Tz[θ5, 6] replaced by "
-        "the identity, all joints at 0."]),
+        N_("z1 and z2 intersect: x2 = ±(z1 × z2). Choose the other sign than the slide."),
+        N_("Turning x2 by 180° changes θ2 by 180° and the sign of α2; the next row's θ3 then changes by 180°."),
+        N_("Or use note 002-n2: joint 3 is prismatic, so the line z2 may be moved sideways (a2 ≠ 0), "
+           "if row 3 moves the origin back (a3 = −a2).")]),
+    "7.1": lambda: Exercise("7.1", N_("the THList slot of each joint"), check_thlist_slots, [
+        N_("configurarTH pushes two matrices per link (THz, then THx), starting with the base's pair."),
+        N_("Key '1' (code 97) writes THList[2] for joint 1.")]),
+    "7.2": lambda: Exercise("7.2", N_("which joint axes stay parallel"), check_parallel_pairs, [
+        N_("Not only consecutive joints: if z2 ∥ z3 and z3 ∥ z4, then z2 ∥ z4."),
+        N_("A pair that is parallel at θ = 0 must stay parallel when any joint turns.")]),
+    "7.3": lambda: Exercise("7.3", N_("where the printed key handler sends the arm"), check_key_jump, [
+        N_("As printed, the key of joint k sets THList[2k] = THx, and THx is the identity at that moment."),
+        N_("Both slots stay overwritten: multiply the 14 factors with Tz[θ2, 6] and Tz[θ5, 6] replaced by "
+           "the identity, all joints at 0.")]),
 }
 
 
@@ -103,6 +104,6 @@ class UnknownExercise(DHLabError, KeyError):
 def exercise(key: str) -> Exercise:
     """A fresh :class:`~dhlab.course.exercises.Exercise` of notebooks 5-7, e.g. ``exercise("5.3")``."""
     if not isinstance(key, str) or key not in _COURSE:
-        raise UnknownExercise(f"no exercise {key!r} in notebooks 5-7: the keys are {', '.join(_COURSE)} "
-                              "(notebooks 1-4: dhlab.course.exercises.exercise).")
+        raise UnknownExercise(_("no exercise {key!r} in notebooks 5-7: the keys are {keys} (notebooks 1-4: "
+                                "dhlab.course.exercises.exercise).").format(key=key, keys=", ".join(_COURSE)))
     return _COURSE[key]()

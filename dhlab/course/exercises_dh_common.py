@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..chain import Robot
+from ..i18n import _
 from ..dh import DHRobot
 from ..mdh import MDHRobot
 from ..lines import Line, relation
@@ -31,17 +32,21 @@ def _blank(x) -> bool:
 
 
 def _unanswered(name: str) -> Feedback:
-    return Feedback("unanswered", f"{name}: {NOT_ANSWERED}")
+    return Feedback("unanswered", f"{name}: {_(NOT_ANSWERED)}")
 
 
-def _right(name: str, items=()) -> Feedback:
-    return Feedback("correct", f"correct: {name} {'are' if name.startswith('the cases') else 'is'} right.",
-                    items)
+def _right(name: str, items=(), plural: bool = False) -> Feedback:
+    """``plural``: the name is of several things ('the cases of x1 … x3 are right')."""
+    title = _("correct: {name} are right.") if plural else _("correct: {name} is right.")
+    return Feedback("correct", title.format(name=name), items)
 
 
-def _wrong(name: str, items, why: str = "") -> Feedback:
-    verb = "are" if name.startswith("the cases") else "is"
-    return Feedback("wrong", f"{name} {verb} not right yet" + (f": {why}" if why else "."), items)
+def _wrong(name: str, items, why: str = "", plural: bool = False) -> Feedback:
+    if why:
+        title = _("{name} are not right yet: {why}") if plural else _("{name} is not right yet: {why}")
+    else:
+        title = _("{name} are not right yet.") if plural else _("{name} is not right yet.")
+    return Feedback("wrong", title.format(name=name, why=why), items)
 
 
 def _num(x: float, digits: int = 4) -> str:
@@ -68,14 +73,14 @@ def _read_numbers(answer, count: int, what: str):
     infinity, complex numbers, ``None`` or ``True`` inside, symbols where numbers are asked.
     """
     if isinstance(answer, (dict, set, frozenset)):
-        return None, (f"your answer is a {type(answer).__name__}: give {count} numbers {what}, as a list or "
-                      "tuple in that order.")
+        return None, _("your answer is a {type}: give {count} numbers {what}, as a list or tuple in that "
+                       "order.").format(type=type(answer).__name__, count=count, what=what)
     try:
-        values = to_vector(answer, "your answer", count)
+        values = to_vector(answer, _("your answer"), count)
     except Refused as why:
-        return None, f"{why} Give {count} numbers {what}."
+        return None, _("{why} Give {count} numbers {what}.").format(why=why, count=count, what=what)
     if isinstance(values, list):          # sympy expressions with symbols in them
-        return None, f"give {count} numbers {what}, not symbols."
+        return None, _("give {count} numbers {what}, not symbols.").format(count=count, what=what)
     return [float(v) for v in values], ""
 
 
@@ -97,14 +102,15 @@ def _as_robot(robot, name: str = "robot", kind=DHRobot, joints: int = 1):
     if not isinstance(robot, kind):
         hint = ""
         if isinstance(robot, MDHRobot) and kind is DHRobot:
-            hint = " It is a modified-DH (Craig) robot: convert it with dhlab.to_standard(robot)."
+            hint = _(" It is a modified-DH (Craig) robot: convert it with dhlab.to_standard(robot).")
         elif isinstance(robot, Robot) and kind is DHRobot:
-            hint = " (a robot built from motions has no DH frames: build it with DHRobot.from_table)."
-        raise DHLabError(f"{name} must be a dhlab {kind.__name__}, e.g. dhlab.robots.ssrms(), "
-                         f"got {describe(robot)}.{hint}")
+            hint = _(" (a robot built from motions has no DH frames: build it with DHRobot.from_table).")
+        raise DHLabError(_("{name} must be a dhlab {kind}, e.g. dhlab.robots.ssrms(), got {value}.").format(
+            name=name, kind=kind.__name__, value=describe(robot)) + hint)
     if robot.n < joints:
-        raise DHLabError(f"{name} has {robot.n} joint{'s' if robot.n != 1 else ''}; this check needs "
-                         f"at least {joints}.")
+        message = (_("{name} has {n} joint; this check needs at least {joints}.") if robot.n == 1 else
+                   _("{name} has {n} joints; this check needs at least {joints}."))
+        raise DHLabError(message.format(name=name, n=robot.n, joints=joints))
     return robot
 
 

@@ -14,6 +14,7 @@ import numpy as np
 import sympy as sp
 
 from .. import robots
+from ..i18n import N_, _
 from ..dh import DHRobot
 from ..lines import Line, closest_points
 from ..mdh import MDHRobot, to_standard
@@ -31,7 +32,7 @@ def four_axis_arm() -> DHRobot:
     """Notebook 5's exercise arm: four revolute joints whose consecutive axes show the
     three cases of x_i (skew, parallel, intersecting). Lengths in metres."""
     return DHRobot.from_table([("q1", 0.5, 0.2, -90), ("q2 - 90", 0, 0.5, 0), ("q3", 0, 0, -90),
-                               ("q4", 0.5, 0, 0)], name="4-axis arm (exercise)", unit="m")
+                               ("q4", 0.5, 0, 0)], name=_("4-axis arm (exercise)"), unit="m")
 
 
 def show_axes(axes, tool=None, ax=None, length: float = 0.3, title: str = ""):
@@ -44,12 +45,14 @@ def show_axes(axes, tool=None, ax=None, length: float = 0.3, title: str = ""):
     axes, tool = _drawn_axes(axes), _drawn_tool(tool)
     length, title = as_length(length, "length"), as_text(title, "title")
     if not 0 < length <= 1e6:
-        raise DHLabError(f"length (of the drawn arrows) must be a positive number, got {describe(length)}.")
+        raise DHLabError(_("length (of the drawn arrows) must be a positive number, got {value}.").format(
+            value=describe(length)))
     if ax is None:
         ax = new_figure((6.0, 4.8)).add_subplot(projection="3d")
     elif not hasattr(ax, "quiver") or getattr(ax, "name", "") != "3d":
-        raise DHLabError(f"ax must be a 3D matplotlib Axes (fig.add_subplot(projection='3d')), got {describe(ax)}.")
-    points = [p for p, _, _ in axes]
+        raise DHLabError(_("ax must be a 3D matplotlib Axes (fig.add_subplot(projection='3d')), got {value}.").format(
+            value=describe(ax)))
+    points = [axis[0] for axis in axes]
     for k, (p, u, kind) in enumerate(axes, start=1):
         ax.plot(*np.array([p - length * u, p + 1.6 * length * u]).T, ":", color="0.5")
         ax.quiver(*p, *(length * u), color="tab:blue", arrow_length_ratio=0.3, lw=2)
@@ -72,19 +75,20 @@ def show_axes(axes, tool=None, ax=None, length: float = 0.3, title: str = ""):
 
 def _drawn_axes(axes) -> list:
     """show_axes' ``axes``: (point, direction, kind) triples, points and nonzero directions of 3 numbers."""
-    items = as_sequence(axes, "axes", "a list of (point, direction, kind), e.g. [((0, 0, 0), (0, 0, 1), 'R')]")
+    items = as_sequence(axes, "axes", _("a list of (point, direction, kind), e.g. [((0, 0, 0), (0, 0, 1), 'R')]"))
     if not items:
-        raise DHLabError("axes is empty: give at least one (point, direction, kind).")
+        raise DHLabError(_("axes is empty: give at least one (point, direction, kind)."))
     out = []
     for k, item in enumerate(items):
         if not isinstance(item, (tuple, list)) or len(item) != 3:
-            raise DHLabError(f"axes[{k}] must be (point, direction, kind), got {describe(item)}.")
+            raise DHLabError(_("axes[{k}] must be (point, direction, kind), got {value}.").format(
+                k=k, value=describe(item)))
         p = as_vector(item[0], f"axes[{k}] point", 3)
         u = as_vector(item[1], f"axes[{k}] direction", 3)
         for v, what in ((p, "point"), (u, "direction")):
             check_length_size(float(np.abs(v).max()), f"axes[{k}] {what}")
         if not np.linalg.norm(u) > 0:
-            raise DHLabError(f"axes[{k}] direction is (0, 0, 0): an axis needs a direction.")
+            raise DHLabError(_("axes[{k}] direction is (0, 0, 0): an axis needs a direction.").format(k=k))
         out.append((p, u / np.linalg.norm(u), item[2]))
     return out
 
@@ -103,6 +107,7 @@ def _drawn_tool(tool):
 
 # --- 5.3 and 6.3: a whole table, checked fairly --------------------------------------------------
 _TABLE_EXERCISES = {"arm": four_axis_arm, "seed002_4dof": robots.seed002_4dof}
+NOT_A_NUMBER_OR_NAME = N_("row {k}, {column}: {value} is not a number or a name.")
 
 
 def compare_robots(student, reference, samples: int = 50, seed: int = 0) -> list:
@@ -116,12 +121,15 @@ def compare_robots(student, reference, samples: int = 50, seed: int = 0) -> list
     samples, seed = _as_samples(samples, seed)
     n = reference.n
     if student.n != n:
-        return [f"your table has {student.n} rows, but the robot has {n} joints: one row per joint."]
+        return [_("your table has {rows} rows, but the robot has {n} joints: one row per joint.").format(
+            rows=student.n, n=n)]
     for k, (s, r) in enumerate(zip(student.links, reference.links), start=1):
         if s.is_revolute != r.is_revolute:
-            want, var, got = ("revolute (R)", "θ", "d") if r.is_revolute else ("prismatic (P)", "d", "θ")
-            return [f"joint {k} is {want}: its variable belongs in {var}{k}, but your row {k} makes "
-                    f"{got}{k} the variable."]
+            message = (_("joint {k} is revolute (R): its variable belongs in θ{k}, but your row {k} makes d{k} the "
+                         "variable.") if r.is_revolute else
+                       _("joint {k} is prismatic (P): its variable belongs in d{k}, but your row {k} makes θ{k} the "
+                         "variable."))
+            return [message.format(k=k)]
     rng = np.random.default_rng(seed)
     lo, hi = reference.qlim.T
     Q = np.vstack([np.zeros(n), lo + (hi - lo) * rng.random((samples, n))])
@@ -138,8 +146,8 @@ def compare_robots(student, reference, samples: int = 50, seed: int = 0) -> list
         T_s, T_r = np.asarray(student.fk(q), dtype=float), np.asarray(reference.fk(q), dtype=float)
         p_s, p_r = T_s[:3, 3], T_r[:3, 3]
         if np.linalg.norm(p_s - p_r) > tol:
-            return [f"every joint axis is right, but the end effector is at {_vec(p_s)} {_at(q)}, not at "
-                    f"{_vec(p_r)}: check the last row (θ{n}'s offset, d{n}, a{n})."]
+            return [_("every joint axis is right, but the end effector is at {got} {at}, not at {right}: check the "
+                      "last row (θ{n}'s offset, d{n}, a{n}).").format(got=_vec(p_s), at=_at(q), right=_vec(p_r), n=n)]
         if T_s[:3, 2] @ T_r[:3, 2] < 1 - 1e-9:
             return [_diagnose_last_z(student, T_r[:3, 2] @ ru[n - 1] > 1 - 1e-9, n)]
     return []
@@ -149,61 +157,68 @@ def _diagnose_last_z(student, along_previous: bool, n: int) -> str:
     """Why z_n, the end effector's own z axis (placed by α_n), points the wrong way."""
     alpha = _num(_row_of(student, n)[3])
     if along_previous:
-        return (f"every joint axis and the end effector's position are right, but your α{n} = {alpha}° turns z{n} "
-                f"away from z{n - 1}: rule 9 puts z{n} along z{n - 1} (the axis of joint {n}).")
-    return (f"every joint axis and the end effector's position are right, but z{n}, the end effector's z axis, "
-            f"points the wrong way: check α{n} (yours is {alpha}°).")
+        return _("every joint axis and the end effector's position are right, but your α{n} = {alpha}° turns z{n} "
+                 "away from z{p}: rule 9 puts z{n} along z{p} (the axis of joint {n}).").format(
+                     n=n, p=n - 1, alpha=alpha)
+    return _("every joint axis and the end effector's position are right, but z{n}, the end effector's z axis, "
+             "points the wrong way: check α{n} (yours is {alpha}°).").format(n=n, alpha=alpha)
 
 
 def _at(q) -> str:
     if not np.any(q):
-        return "at q = 0"
-    return "at q = " + _vec([math.degrees(v) for v in q], 1) + " (revolute joints in degrees)"
+        return _("at q = 0")
+    return _("at q = {q} (revolute joints in degrees)").format(q=_vec([math.degrees(v) for v in q], 1))
 
 
 def _diagnose_axis(student, reference, k: int, q, tol: float) -> str:
     """Why joint k's axis (z_(k-1), placed by row k-1) is not where it should be."""
     i = k - 1
     if i == 0:
-        return "joint 1: z0 must lie on joint 1's axis, as drawn."
-    _, _, a, alpha = _row_of(student, i)
+        return _("joint 1: z0 must lie on joint 1's axis, as drawn.")
+    a, alpha = _row_of(student, i)[2:]
     rp, ru = _axes_of(reference, q)
     sp_, su = _axes_of(student, q)
     ref = axis_relation(rp[i - 1], ru[i - 1], rp[i], ru[i])
     ref_angle = _num(min(ref.angle, 180 - ref.angle), 1)
-    axes_name = f"z{i - 1} and z{i} (the axes of joints {i} and {k})"
-    yours = f"joint {k}: your α{i} is {_num(alpha)}°"
+    fields = dict(i=i, k=k, p=i - 1, alpha=_num(alpha), angle=ref_angle, at=_at(q))
+    fields["axes"] = _("z{p} and z{i} (the axes of joints {i} and {k})").format(**fields)
     stu_parallel = abs(math.sin(math.radians(alpha))) < 1e-6
     if ref.is_parallel and not stu_parallel:
-        return f"{yours}, but {axes_name} are parallel: α{i} must be 0° or 180°."
+        return _("joint {k}: your α{i} is {alpha}°, but {axes} are parallel: α{i} must be 0° or 180°.").format(
+            **fields)
     if not ref.is_parallel and stu_parallel:
-        return f"{yours}, which keeps z{i} parallel to z{i - 1}, but {axes_name} are at {ref_angle}° to each other."
+        return _("joint {k}: your α{i} is {alpha}°, which keeps z{i} parallel to z{p}, but {axes} are at {angle}° "
+                 "to each other.").format(**fields)
     stu_angle = abs(alpha) if abs(alpha) <= 180 else 360 - abs(alpha)
     if min(abs(stu_angle - ref.angle), abs(stu_angle - (180 - ref.angle))) > ANGLE_TOL:
-        return (f"{yours}: it turns z{i} {_num(stu_angle, 1)}° away from z{i - 1}, but {axes_name} "
-                f"are at {ref_angle}° to each other.")
+        return _("joint {k}: your α{i} is {alpha}°: it turns z{i} {turn}° away from z{p}, but {axes} are at "
+                 "{angle}° to each other.").format(turn=_num(stu_angle, 1), **fields)
     if su[i] @ ru[i] < 0:
-        return (f"joint {k}: z{i} points against joint {k}'s positive sense (the way its variable grows): change the "
-                f"sign of α{i}, or turn x{i} the other way (θ{i} + 180° and a{i} → −a{i}).")
+        return _("joint {k}: z{i} points against joint {k}'s positive sense (the way its variable grows): change the "
+                 "sign of α{i}, or turn x{i} the other way (θ{i} + 180° and a{i} → −a{i}).").format(**fields)
     if abs(abs(a) - ref.distance) > tol:
-        what = f"they intersect, so a{i} = 0" if ref.kind in ("intersect", "coincident") \
-            else f"they are {_num(ref.distance)} apart"
-        return f"joint {k}: your a{i} = {_num(a)} puts {axes_name} {_num(abs(a))} apart, but {what}."
+        what = _("they intersect, so a{i} = 0").format(i=i) if ref.kind in ("intersect", "coincident") \
+            else _("they are {distance} apart").format(distance=_num(ref.distance))
+        return _("joint {k}: your a{i} = {a} puts {axes} {size} apart, but {what}.").format(
+            a=_num(a), size=_num(abs(a)), what=what, **fields)
     if not ref.is_parallel:
         # where the common normal of z_(i-1) and z_i meets z_(i-1): student's vs reference's
-        foot_ref, _ = closest_points(Line(rp[i - 1], ru[i - 1]), Line(rp[i], ru[i]))
-        foot_stu, _ = closest_points(Line(sp_[i - 1], su[i - 1]), Line(sp_[i], su[i]))
+        foot_ref = closest_points(Line(rp[i - 1], ru[i - 1]), Line(rp[i], ru[i]))[0]
+        foot_stu = closest_points(Line(sp_[i - 1], su[i - 1]), Line(sp_[i], su[i]))[0]
         if abs(float((foot_stu - foot_ref) @ ru[i - 1])) > tol:
             also = ""
             if i >= 2 and axis_relation(rp[i - 2], ru[i - 2], rp[i - 1], ru[i - 1]).is_parallel:
-                also = (f" (or d{i - 1}: z{i - 2} ∥ z{i - 1}, so d{i - 1} and d{i} slide along the same "
-                        "direction and only their sum is fixed)")
-            return (f"joint {k}: the axis has the right direction and distance from joint {i}'s axis, "
-                    f"but sits at the wrong place along z{i - 1} {_at(q)}: check d{i}{also}.")
-    theta = "θ" if student.links[i - 1].is_revolute else "the constant θ"
-    return (f"joint {k}: the axis has the right direction and distance from joint {i}'s axis, but is "
-            f"turned about z{i - 1} {_at(q)}: check {theta}{i} (its offset: at q = 0 the robot must be "
-            f"in the pictured pose) and the sign of a{i}.")
+                also = _(" (or d{p}: z{pp} ∥ z{p}, so d{p} and d{i} slide along the same direction and only their "
+                         "sum is fixed)").format(p=i - 1, pp=i - 2, i=i)
+            return _("joint {k}: the axis has the right direction and distance from joint {i}'s axis, but sits at "
+                     "the wrong place along z{p} {at}: check d{i}{also}.").format(also=also, **fields)
+    message = (_("joint {k}: the axis has the right direction and distance from joint {i}'s axis, but is turned "
+                 "about z{p} {at}: check θ{i} (its offset: at q = 0 the robot must be in the pictured pose) and the "
+                 "sign of a{i}.") if student.links[i - 1].is_revolute else
+               _("joint {k}: the axis has the right direction and distance from joint {i}'s axis, but is turned "
+                 "about z{p} {at}: check the constant θ{i} (its offset: at q = 0 the robot must be in the pictured "
+                 "pose) and the sign of a{i}."))
+    return message.format(**fields)
 
 
 def _same_table(student, reference) -> bool:
@@ -215,33 +230,36 @@ def _row_problem(rows) -> str:
     """What makes ``rows`` unreadable as a DH table typed as on the slides ('' when nothing)."""
     for k, row in enumerate(rows, start=1):
         if isinstance(row, (str, dict, set)) or not isinstance(row, (list, tuple, np.ndarray)):
-            return f"row {k} must be a tuple (θ, d, a, α), not {type(row).__name__} {_short(row)}."
+            return _("row {k} must be a tuple (θ, d, a, α), not {type} {value}.").format(
+                k=k, type=type(row).__name__, value=_short(row))
         if len(row) != 4:
-            return f"row {k} has {len(row)} entries; a DH row has 4: (θ, d, a, α)."
+            return _("row {k} has {n} entries; a DH row has 4: (θ, d, a, α).").format(k=k, n=len(row))
         for column, value in zip("θdaα", row):
             if isinstance(value, str):
                 continue                      # a joint variable or a length by name, read by from_table
             if isinstance(value, (bool, np.bool_)) or value is None:
-                return f"row {k}, {column}: {value!r} is not a number or a name."
+                return _(NOT_A_NUMBER_OR_NAME).format(k=k, column=column, value=repr(value))
             try:
                 number = complex(value)
             except (TypeError, ValueError, OverflowError):
                 if isinstance(value, sp.Basic) and not value.has(sp.zoo, sp.oo, sp.nan, -sp.oo):
                     continue                  # a sympy expression such as q2 - pi/2: from_table reads it
-                return f"row {k}, {column}: {_short(value)} is not a number or a name."
+                return _(NOT_A_NUMBER_OR_NAME).format(k=k, column=column, value=_short(value))
             if number.imag != 0 or not math.isfinite(number.real):
-                return (f"row {k}, {column}: {_short(value)} is not a finite real number (NaN, infinity "
-                        "or complex).")
+                return _("row {k}, {column}: {value} is not a finite real number (NaN, infinity or complex).").format(
+                    k=k, column=column, value=_short(value))
             if abs(number.real) > 1e6:
-                return f"row {k}, {column}: {_short(value)} is far too large for a length or an angle."
+                return _("row {k}, {column}: {value} is far too large for a length or an angle.").format(
+                    k=k, column=column, value=_short(value))
     return ""
 
 
 # The column orders a table from Craig's convention comes in: the course's (θ, d, a, α), Craig's own
 # (α_(i−1), a_(i−1), d_i, θ_i), and the Robotics Toolbox's printout (a_(i−1), α_(i−1), θ_i, d_i).
 _MODIFIED_ORDERS = (("", lambda r: (r[0], r[1], r[2], r[3])),
-                    (" in Craig's column order (α_(i−1), a_(i−1), d_i, θ_i)", lambda r: (r[3], r[2], r[1], r[0])),
-                    (" in the column order (a_(i−1), α_(i−1), θ_i, d_i)", lambda r: (r[2], r[3], r[0], r[1])))
+                    (N_(" in Craig's column order (α_(i−1), a_(i−1), d_i, θ_i)"),
+                     lambda r: (r[3], r[2], r[1], r[0])),
+                    (N_(" in the column order (a_(i−1), α_(i−1), θ_i, d_i)"), lambda r: (r[2], r[3], r[0], r[1])))
 
 
 def _modified_reading(rows, reference, params) -> str:
@@ -253,12 +271,12 @@ def _modified_reading(rows, reference, params) -> str:
                 continue
         except DHLabError:
             continue
-        return (f"this table is in modified DH (Craig){order}: each row i holds a_(i−1) and α_(i−1), the "
-                "common normal from the axis of joint i−1, and A_i = Rx(α_(i−1))·Tx(a_(i−1))·Rz(θ_i)·Tz(d_i). "
-                "In that convention it describes this robot. The course uses standard DH: row i holds a_i and "
-                "α_i, measured along and about x_i from z_(i−1) to z_i, and A_i = Rz(θ_i)·Tz(d_i)·Tx(a_i)·Rx(α_i). "
-                "θ_i and d_i stay as they are; move the a and α columns up one row (the last row takes the "
-                "end effector's a_n, α_n), and write each row as (θ, d, a, α).")
+        return _("this table is in modified DH (Craig){order}: each row i holds a_(i−1) and α_(i−1), the "
+                 "common normal from the axis of joint i−1, and A_i = Rx(α_(i−1))·Tx(a_(i−1))·Rz(θ_i)·Tz(d_i). "
+                 "In that convention it describes this robot. The course uses standard DH: row i holds a_i and "
+                 "α_i, measured along and about x_i from z_(i−1) to z_i, and A_i = Rz(θ_i)·Tz(d_i)·Tx(a_i)·Rx(α_i). "
+                 "θ_i and d_i stay as they are; move the a and α columns up one row (the last row takes the "
+                 "end effector's a_n, α_n), and write each row as (θ, d, a, α).").format(order=_(order))
     return ""
 
 
@@ -269,16 +287,19 @@ def check_table(rows, exercise: str = "arm", params=None, different: bool = Fals
     ``params``: numbers for length symbols such as ``l1`` (default: the robot's own).
     ``different=True``: the exercise asks for a table other than the robot's own."""
     if not isinstance(exercise, str) or exercise not in _TABLE_EXERCISES:
-        raise DHLabError(f"exercise must be one of {sorted(_TABLE_EXERCISES)}, got {exercise!r}.")
+        raise DHLabError(_("exercise must be one of {choices}, got {value!r}.").format(
+            choices=sorted(_TABLE_EXERCISES), value=exercise))
     if params is not None and not isinstance(params, dict):
-        raise DHLabError(f"params must be a dict {{name: number}}, e.g. {{'l1': 1.0}}, got {describe(params)}.")
+        raise DHLabError(_("params must be a dict {{name: number}}, e.g. {{'l1': 1.0}}, got {value}.").format(
+            value=describe(params)))
     different = as_flag(different, "different")
     reference = _TABLE_EXERCISES[exercise]()
-    name = "your table"
+    name = _("your table")
     if _blank(rows):
         return _unanswered(name)
     if isinstance(rows, str) or not isinstance(rows, (list, tuple)):
-        return _wrong(name, [f"give a list of rows (θ, d, a, α), one per joint, not a {type(rows).__name__}."])
+        return _wrong(name, [_("give a list of rows (θ, d, a, α), one per joint, not a {type}.").format(
+            type=type(rows).__name__)])
     problem = _row_problem(rows)
     if problem:
         return _wrong(name, [problem])
@@ -288,17 +309,17 @@ def check_table(rows, exercise: str = "arm", params=None, different: bool = Fals
         other = _modified_reading(rows, reference, {**reference.params, **(params or {})})
         return _wrong(name, [other or str(exc)])
     except Exception as exc:       # anything from_table could not read: still feedback, never a traceback
-        return _wrong(name, [f"the table could not be read ({type(exc).__name__}): each row is "
-                             "(θ, d, a, α), numbers or names such as \"q2 - 90\" or \"l1\"."])
+        return _wrong(name, [_("the table could not be read ({error}): each row is (θ, d, a, α), numbers or names "
+                               "such as \"q2 - 90\" or \"l1\".").format(error=type(exc).__name__)])
     problems = compare_robots(student, reference)
     if problems:
         other = _modified_reading(rows, reference, {**reference.params, **(params or {})})
         if other:
             return _wrong(name, [other])
-        return _wrong(name, problems, "fix this first (the joints after it are checked next).")
+        return _wrong(name, problems, _("fix this first (the joints after it are checked next)."))
     if different and _same_table(student, reference):
-        return _wrong(name, ["this is the slide's own table (it is right): the exercise asks for another "
-                             "valid one, with at least one free choice made the other way."])
-    return _right(name, ["Every joint axis and the end effector are where they should be, at q = 0 and "
-                         "at 50 random configurations. Another valid table may differ from yours: DH "
-                         "frames are not unique (seed 002)."])
+        return _wrong(name, [_("this is the slide's own table (it is right): the exercise asks for another "
+                               "valid one, with at least one free choice made the other way.")])
+    return _right(name, [_("Every joint axis and the end effector are where they should be, at q = 0 and "
+                           "at 50 random configurations. Another valid table may differ from yours: DH "
+                           "frames are not unique (seed 002).")])

@@ -8,6 +8,7 @@ import sympy as sp
 
 from .. import robots
 from ..dh import DHRobot
+from ..i18n import _
 from ..mdh import mdh_matrix
 from ..transforms import dh_matrix
 from ..validation import DHLabError, as_index, as_vector, has_angle_mark
@@ -36,7 +37,7 @@ def _to_robot_symbols(M, robot):
 def link_exercise_robot() -> DHRobot:
     """Exercise 6.1's two-link table: its row 2, (q2 + 90°, l2, 0, −90°), has an offset and
     a negative twist."""
-    return DHRobot.from_table([("q1", "l1", 0, 90), ("q2 + 90", "l2", 0, -90)], name="exercise 6.1 table",
+    return DHRobot.from_table([("q1", "l1", 0, 90), ("q2 + 90", "l2", 0, -90)], name=_("exercise 6.1 table"),
                               params={"l1": 1.0, "l2": 0.5})
 
 
@@ -45,7 +46,7 @@ def check_link_matrix(M, i: int = 2, robot=None) -> Feedback:
     link ``i`` of ``robot`` (default: :func:`link_exercise_robot`)."""
     robot = link_exercise_robot() if robot is None else _as_robot(robot, kind=DHRobot)
     i = as_index(i, "i", 1, robot.n)
-    name = f"your {str(i - 1).translate(_SUP)}A{str(i).translate(_SUB)}"
+    name = _("your {matrix}").format(matrix=f"{str(i - 1).translate(_SUP)}A{str(i).translate(_SUB)}")
     if _blank(M):
         return _unanswered(name)
     if isinstance(M, sp.MatrixBase):
@@ -57,18 +58,20 @@ def check_link_matrix(M, i: int = 2, robot=None) -> Feedback:
         if link.offset != 0:
             degrees = math.degrees(float(link.offset))
             mistakes.append((dh_matrix(q, d, link.a, link.alpha),
-                             f"you left out the offset: θ{i} = {q} {'+' if degrees > 0 else '−'} "
-                             f"{_num(abs(degrees))}°, so the entries hold cos and sin of the whole θ{i}."))
+                             _("you left out the offset: θ{i} = {q} {sign} {degrees}°, so the entries hold cos "
+                               "and sin of the whole θ{i}.").format(i=i, q=q, sign="+" if degrees > 0 else "−",
+                                                                    degrees=_num(abs(degrees)))))
     else:
         theta, d = link.theta, q + link.offset
     mistakes.append((dh_matrix(theta, d, link.a, -link.alpha),
-                     f"the sign of α{i} is flipped: it is {_num(math.degrees(float(link.alpha)))}°."))
+                     _("the sign of α{i} is flipped: it is {alpha}°.").format(
+                         i=i, alpha=_num(math.degrees(float(link.alpha))))))
     mistakes.append((dh_matrix(theta, d, link.a, link.alpha).T,
-                     "you wrote the rows as columns: the whole matrix is transposed."))
+                     _("you wrote the rows as columns: the whole matrix is transposed.")))
     mistakes.append((mdh_matrix(theta, d, link.a, link.alpha),
-                     f"this is the modified DH (Craig) product Rx(α)·Tx(a)·Rz(θ)·Tz(d) of row {i}. The course "
-                     f"uses standard DH: A{i} = Rz(θ{i})·Tz(d{i})·Tx(a{i})·Rx(α{i}), the same four motions with "
-                     f"the ones along z_(i−1) first."))
+                     _("this is the modified DH (Craig) product Rx(α)·Tx(a)·Rz(θ)·Tz(d) of row {i}. The course "
+                       "uses standard DH: A{i} = Rz(θ{i})·Tz(d{i})·Tx(a{i})·Rx(α{i}), the same four motions with "
+                       "the ones along z_(i−1) first.").format(i=i)))
     return check_matrix(M, robot.A(i), name=name, mistakes=mistakes, index_style="math")
 
 
@@ -79,10 +82,11 @@ WRIST_Q_DEG = (30, -45, 60, 90, -30, 45)
 def _degrees(q_deg, n: int) -> np.ndarray:
     """``q_deg``: n joint angles in degrees, as plain numbers of at most a full turn."""
     if has_angle_mark(q_deg):
-        raise DHLabError("q_deg is in degrees already: give plain numbers (30, not deg2rad(30)).")
+        raise DHLabError(_("q_deg is in degrees already: give plain numbers (30, not deg2rad(30))."))
     values = as_vector(q_deg, "q_deg", n)
     if np.any(np.abs(values) > 360):
-        raise DHLabError(f"q_deg holds joint angles in degrees, each at most 360 in size; got {values.tolist()}.")
+        raise DHLabError(_("q_deg holds joint angles in degrees, each at most 360 in size; got {values}.").format(
+            values=values.tolist()))
     return values
 
 
@@ -102,20 +106,20 @@ def check_wrist_centre(p, q_deg=WRIST_Q_DEG, robot=None) -> Feedback:
     Default robot: seed 002's 6-DOF arm."""
     robot = robots.seed002_6dof() if robot is None else _as_robot(robot, joints=6)
     if robot.n != 6:
-        raise DHLabError(f"robot must be a 6-DOF arm with a spherical wrist; it has {robot.n} joints.")
+        raise DHLabError(_("robot must be a 6-DOF arm with a spherical wrist; it has {n} joints.").format(n=robot.n))
     q = np.radians(_degrees(q_deg, robot.n))
     F = np.asarray(robot.frames(q), dtype=float)
     T = np.asarray(robot.fk(q), dtype=float)
     centre, p_end, a = F[4, :3, 3], T[:3, 3], T[:3, 2]
     if not _spherical_wrist(F, centre, 1e-9 * max(1.0, robot.reach())):
-        raise DHLabError(f"{robot.name!r} has no spherical wrist: the axes of joints 4, 5 and 6 do not meet "
-                         "in one point (O4 = O5), so it has no wrist centre to check.")
+        raise DHLabError(_("{name!r} has no spherical wrist: the axes of joints 4, 5 and 6 do not meet in one point "
+                           "(O4 = O5), so it has no wrist centre to check.").format(name=robot.name))
     l4 = float(np.linalg.norm(p_end - centre))
-    mistakes = [(p_end, f"that is the end effector p: the wrist centre is l4 = {_num(l4)} back from p "
-                        "along the approach vector a (the third column of T): p_w = p − l4·a."),
-                (p_end + l4 * a, "you went the wrong way along a: p_w = p − l4·a, not p + l4·a.")]
+    mistakes = [(p_end, _("that is the end effector p: the wrist centre is l4 = {l4} back from p along the "
+                          "approach vector a (the third column of T): p_w = p − l4·a.").format(l4=_num(l4))),
+                (p_end + l4 * a, _("you went the wrong way along a: p_w = p − l4·a, not p + l4·a."))]
     for k in (1, 2, 3, 6):
         if np.linalg.norm(F[k, :3, 3] - centre) > 1e-6:
-            mistakes.append((F[k, :3, 3], f"that is the origin of frame {k}: the wrist centre is where "
-                                          "the axes of joints 4, 5 and 6 meet (O4 = O5)."))
-    return check_value(p, centre, name="your wrist centre", components=("x", "y", "z"), mistakes=mistakes)
+            mistakes.append((F[k, :3, 3], _("that is the origin of frame {k}: the wrist centre is where the axes "
+                                            "of joints 4, 5 and 6 meet (O4 = O5).").format(k=k)))
+    return check_value(p, centre, name=_("your wrist centre"), components=("x", "y", "z"), mistakes=mistakes)

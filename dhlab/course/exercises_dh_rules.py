@@ -11,6 +11,7 @@ import re
 
 import numpy as np
 
+from ..i18n import N_, _
 from ..mdh import mdh_matrix
 from ..transforms import Rx, Rz, dh_matrix, trans
 from ..validation import DHLabError, as_matrix4, describe, rigid_problem
@@ -25,14 +26,17 @@ __all__ = ["check_x_cases", "ROW_EXERCISE", "row_exercise_frames", "check_dh_row
 
 # --- 5.1: the case of each x_i ------------------------------------------------------------------
 _CASE_WORDS = (("intersec", "intersect"), ("corta", "intersect"), ("parallel", "parallel"),
-               ("parale", "parallel"), ("skew", "skew"), ("cruza", "skew"), ("coinciden", "coincident"),
+               ("parale", "parallel"), ("skew", "skew"), ("cruza", "skew"), ("alabead", "skew"),
+               ("coinciden", "coincident"),
                ("same line", "coincident"), ("misma recta", "coincident"))
 _CASE_NUMBERS = {1: "intersect", 2: "parallel", 3: "skew"}
 _NEGATION = re.compile(r"\b(not|no|never|neither|nor|cannot|can t|don t|doesn t|isn t|aren t|dont|doesnt|isnt|"
                        r"arent|nunca|ni|tampoco)\b")
-_SAID = {"intersect": "z{p} and z{i} intersect", "parallel": "z{p} and z{i} are parallel",
-         "skew": "z{p} and z{i} are skew", "coincident": "z{p} and z{i} are the same line"}
-_ASK = "say which one case holds: 'intersect', 'parallel' or 'skew' (or 'case 1', 'case 2', 'case 3')."
+_SAID = {"intersect": N_("z{p} and z{i} intersect"), "parallel": N_("z{p} and z{i} are parallel"),
+         "skew": N_("z{p} and z{i} are skew"), "coincident": N_("z{p} and z{i} are the same line")}
+_ASK = N_("say which one case holds: 'intersect', 'parallel' or 'skew' (or 'case 1', 'case 2', 'case 3').")
+_CASE_NAMES = {"intersect": N_("intersect"), "parallel": N_("parallel"), "skew": N_("skew"),
+               "coincident": N_("coincident")}
 
 
 def _cases_named(text: str) -> set:
@@ -58,19 +62,21 @@ def _read_case(value):
     number = _whole_number(value)
     if number is not None:
         if number not in _CASE_NUMBERS:
-            return None, f"there is no case {number}: {_ASK}"
+            return None, _("there is no case {number}: {ask}").format(number=number, ask=_(_ASK))
         return _CASE_NUMBERS[number], ""
     if not isinstance(value, str):
-        return None, f"cannot read {_short(value)}: {_ASK}"
+        return None, _("cannot read {value}: {ask}").format(value=_short(value), ask=_(_ASK))
     text, shown = words(value), repr(value.strip()[:40])
     named = _cases_named(text)
     if len(named) > 1:
-        count = {2: "two", 3: "three"}.get(len(named), str(len(named)))
-        return None, f"your answer {shown} names {count} cases ({' and '.join(sorted(named))}): {_ASK}"
+        message = (_("your answer {shown} names two cases ({cases}): {ask}") if len(named) == 2 else
+                   _("your answer {shown} names {count} cases ({cases}): {ask}"))
+        return None, message.format(shown=shown, count=len(named), ask=_(_ASK), cases=_(" and ").join(
+            _(_CASE_NAMES[k]) for k in sorted(named)))
     if _NEGATION.search(text):
-        return None, f"your answer {shown} says what does not hold: {_ASK}"
+        return None, _("your answer {shown} says what does not hold: {ask}").format(shown=shown, ask=_(_ASK))
     if not named:
-        return None, f"cannot read {_short(value)}: {_ASK}"
+        return None, _("cannot read {value}: {ask}").format(value=_short(value), ask=_(_ASK))
     return named.pop(), ""
 
 
@@ -78,14 +84,16 @@ def _refutation(said: str, rel: Relation) -> str:
     """Why the relation the student said is not the one of z_(i-1) and z_i, without naming the
     right one (that is the exercise): the test their claim fails."""
     if said == "coincident" and rel.kind == "intersect":
-        return (f"one line has a single direction, and their directions are "
-                f"{_num(min(rel.angle, 180 - rel.angle), 1)}° apart.")
+        return _("one line has a single direction, and their directions are {angle}° apart.").format(
+            angle=_num(min(rel.angle, 180 - rel.angle), 1))
     if said in ("intersect", "coincident"):
-        return f"they do not meet: the shortest distance between the two lines is {_num(rel.distance)}, not 0."
+        return _("they do not meet: the shortest distance between the two lines is {distance}, not 0.").format(
+            distance=_num(rel.distance))
     if said == "parallel":
-        return (f"they do not point the same way: their directions are "
-                f"{_num(min(rel.angle, 180 - rel.angle), 1)}° apart.")
-    return "they lie in one plane, and skew lines never do (look at their directions, then at whether they meet)."
+        return _("they do not point the same way: their directions are {angle}° apart.").format(
+            angle=_num(min(rel.angle, 180 - rel.angle), 1))
+    return _("they lie in one plane, and skew lines never do (look at their directions, then at whether they "
+             "meet).")
 
 
 def _case_key(key):
@@ -108,23 +116,25 @@ def check_x_cases(answer, robot=None) -> Feedback:
     """
     robot = four_axis_arm() if robot is None else _as_robot(robot, joints=2)
     count = robot.n - 1
-    name = f"the cases of x1 … x{count}"
+    name = _("the cases of x1 … x{count}").format(count=count)
     if _blank(answer):
         return _unanswered(name)
     if isinstance(answer, (list, tuple)):
         answer = dict(enumerate(answer, start=1))
     if not isinstance(answer, dict):
-        return _wrong(name, [f"give a dict {{i: case}} for i = 1 … {count}, e.g. {{1: 'parallel', …}}, "
-                             f"not a {type(answer).__name__}."])
+        return _wrong(name, [_("give a dict {{i: case}} for i = 1 … {count}, e.g. {{1: 'parallel', …}}, not a "
+                               "{type}.").format(count=count, type=type(answer).__name__)], plural=True)
     given = {}
     for key, value in answer.items():
         i = _case_key(key)
         if i is None or not 1 <= i <= count:
-            return _wrong(name, [f"{_short(key)} is not one of the x_i asked: the keys are 1 … {count}."])
+            return _wrong(name, [_("{key} is not one of the x_i asked: the keys are 1 … {count}.").format(
+                key=_short(key), count=count)], plural=True)
         given[i] = value
     missing = [i for i in range(1, count + 1) if i not in given]
     if missing:
-        return _wrong(name, [f"say the case of every x_i, i = 1 … {count}: x{missing[0]} is missing."])
+        return _wrong(name, [_("say the case of every x_i, i = 1 … {count}: x{i} is missing.").format(
+            count=count, i=missing[0])], plural=True)
     points, dirs = _axes_of(robot, robot.qz)
     items = []
     for i in range(1, count + 1):
@@ -136,9 +146,9 @@ def check_x_cases(answer, robot=None) -> Feedback:
         if rel.kind == "coincident" and said in ("coincident", "parallel", "intersect"):
             continue
         if said != rel.kind:
-            items.append(f"x{i}: you said {_SAID[said].format(p=i - 1, i=i)}, but "
-                         f"{_refutation(said, rel)}")
-    return _wrong(name, items) if items else _right(name)
+            items.append(_("x{i}: you said {said}, but {why}").format(
+                i=i, said=_(_SAID[said]).format(p=i - 1, i=i), why=_refutation(said, rel)))
+    return _wrong(name, items, plural=True) if items else _right(name, plural=True)
 
 
 # --- 5.2: one DH row from two frames ---------------------------------------------------------------
@@ -164,8 +174,8 @@ def _true_row(before, after):
     alpha = math.atan2(A[2, 1], A[2, 2])
     a = A[0, 3] * math.cos(theta) + A[1, 3] * math.sin(theta)
     if not np.allclose(dh_matrix(theta, A[2, 3], a, alpha), A, atol=1e-9):
-        raise DHLabError("these two frames are not related by a DH link: x_i must cross z_(i-1) at a "
-                         "right angle.")
+        raise DHLabError(_("these two frames are not related by a DH link: x_i must cross z_(i-1) at a right "
+                           "angle."))
     return math.degrees(theta), float(A[2, 3]), float(a), math.degrees(alpha)
 
 
@@ -181,22 +191,22 @@ def _modified_reading(values, before, after) -> str:
     craig = mdh_matrix(angles[0], d, a, angles[1])
     if np.allclose(standard, A, atol=1e-3 * scale) or not np.allclose(craig, A, atol=1e-3 * scale):
         return ""
-    return ("this row is in modified DH (Craig): Rx(α)·Tx(a)·Rz(θ)·Tz(d) with your numbers carries {S_(i−1)} "
-            "onto {S_i}. The course uses standard DH, A = Rz(θ)·Tz(d)·Tx(a)·Rx(α): the same four motions, "
-            "the turn and slide along z_(i−1) first (θ, d), then along x_i (a, α).")
+    return _("this row is in modified DH (Craig): Rx(α)·Tx(a)·Rz(θ)·Tz(d) with your numbers carries {S_(i−1)} "
+             "onto {S_i}. The course uses standard DH, A = Rz(θ)·Tz(d)·Tx(a)·Rx(α): the same four motions, "
+             "the turn and slide along z_(i−1) first (θ, d), then along x_i (a, α).")
 
 
 def _frame_pair(frames):
     """``frames`` = ({S_(i-1)}, {S_i}): two rigid 4x4 poses."""
     if not isinstance(frames, (list, tuple)) or len(frames) != 2:
-        got = f"{len(frames)} items" if isinstance(frames, (list, tuple)) else describe(frames)
-        raise DHLabError(f"frames must be a pair (S_prev, S_next) of 4x4 poses, got {got}.")
+        got = _("{n} items").format(n=len(frames)) if isinstance(frames, (list, tuple)) else describe(frames)
+        raise DHLabError(_("frames must be a pair (S_prev, S_next) of 4x4 poses, got {got}.").format(got=got))
     pair = []
     for k, T in enumerate(frames):
         T = as_matrix4(T, f"frames[{k}]")
         problem = rigid_problem(T, 1e-6)
         if problem:
-            raise DHLabError(f"frames[{k}] is not a pose: {problem}.")
+            raise DHLabError(_("frames[{k}] is not a pose: {problem}.").format(k=k, problem=problem))
         pair.append(T)
     return pair
 
@@ -204,11 +214,11 @@ def _frame_pair(frames):
 def check_dh_row(answer, frames=None) -> Feedback:
     """Check a DH row ``(θ, d, a, α)`` (angles in **degrees**) that carries ``frames[0]`` =
     {S_(i-1)} onto ``frames[1]`` = {S_i} (default: :func:`row_exercise_frames`)."""
-    name = "your row (θ, d, a, α)"
+    name = _("your row (θ, d, a, α)")
     before, after = row_exercise_frames() if frames is None else _frame_pair(frames)
     if _blank(answer):
         return _unanswered(name)
-    values, problem = _read_numbers(answer, 4, "(θ, d, a, α), angles in degrees")
+    values, problem = _read_numbers(answer, 4, _("(θ, d, a, α), angles in degrees"))
     if problem:
         return _wrong(name, [problem])
     theta, d, a, alpha = values
@@ -220,40 +230,39 @@ def check_dh_row(answer, frames=None) -> Feedback:
     near = lambda x, y: abs(x - y) <= 1e-3 * scale
     same_angle = lambda x, y: abs(_angle_diff(x, y)) <= ANGLE_TOL
     if not (near(d, t_d) and near(a, t_a)) and near(d, t_a) and near(a, t_d):
-        return _wrong(name, ["d and a are swapped: the columns are θ, d, a, α; d is measured along "
-                             "z_(i−1), a along x_i."])
+        return _wrong(name, [_("d and a are swapped: the columns are θ, d, a, α; d is measured along z_(i−1), "
+                               "a along x_i.")])
     items = []
     if not same_angle(theta, t_theta):
         hint = ""
         if same_angle(theta, -t_theta):
-            hint = " Check the sense: positive is counter-clockwise seen from the tip of z_(i−1)."
+            hint = _(" Check the sense: positive is counter-clockwise seen from the tip of z_(i−1).")
         elif same_angle(theta + 180, t_theta):
-            hint = " It is 180° off: your x_i points the other way."
-        items.append(f"θ: turning x_(i−1) by your θ = {_num(theta)}° about z_(i−1) does not make it "
-                     f"parallel to x_i (rule 10).{hint}")
+            hint = _(" It is 180° off: your x_i points the other way.")
+        items.append(_("θ: turning x_(i−1) by your θ = {theta}° about z_(i−1) does not make it parallel to x_i "
+                       "(rule 10).").format(theta=_num(theta)) + hint)
     if not near(d, t_d):
-        hint = " The sign: d is positive towards +z_(i−1)." if near(d, -t_d) else ""
-        items.append(f"d: your d = {_num(d)} is not the distance along z_(i−1) from O_(i−1) to the "
-                     f"point where x_i crosses z_(i−1) (rule 11).{hint}")
+        hint = _(" The sign: d is positive towards +z_(i−1).") if near(d, -t_d) else ""
+        items.append(_("d: your d = {d} is not the distance along z_(i−1) from O_(i−1) to the point where x_i "
+                       "crosses z_(i−1) (rule 11).").format(d=_num(d)) + hint)
     if not near(a, t_a):
-        hint = (" The sign: a is measured along +x_i, from z_(i−1) to O_i (a negative a means x_i points "
-                "from O_i back towards z_(i−1), note 002-n1)." if near(a, -t_a) else "")
-        items.append(f"a: your a = {_num(a)} is not the distance along x_i from z_(i−1) to O_i "
-                     f"(rule 12).{hint}")
+        hint = (_(" The sign: a is measured along +x_i, from z_(i−1) to O_i (a negative a means x_i points "
+                  "from O_i back towards z_(i−1), note 002-n1).") if near(a, -t_a) else "")
+        items.append(_("a: your a = {a} is not the distance along x_i from z_(i−1) to O_i (rule 12).").format(
+            a=_num(a)) + hint)
     if not same_angle(alpha, t_alpha):
         if same_angle(t_alpha, 0) or same_angle(t_alpha, 180):
-            items.append(f"α: your α is {_num(alpha)}°, but z_(i−1) and z_i are parallel: α is 0° or "
-                         "180° (0° when they point the same way).")
+            items.append(_("α: your α is {alpha}°, but z_(i−1) and z_i are parallel: α is 0° or 180° (0° when "
+                           "they point the same way).").format(alpha=_num(alpha)))
         elif same_angle(alpha, 0) or same_angle(alpha, 180):
-            items.append(f"α: your α is {_num(alpha)}°, which keeps z_i parallel to z_(i−1), but they "
-                         f"are at {_num(abs(t_alpha), 1)}° to each other.")
+            items.append(_("α: your α is {alpha}°, which keeps z_i parallel to z_(i−1), but they are at "
+                           "{angle}° to each other.").format(alpha=_num(alpha), angle=_num(abs(t_alpha), 1)))
         elif same_angle(alpha, -t_alpha):
-            items.append("α: the size is right but not the sign: turning z_(i−1) by α about x_i "
-                         "(right-hand rule: counter-clockwise seen from the tip of x_i) must bring it "
-                         "onto z_i (rule 13).")
+            items.append(_("α: the size is right but not the sign: turning z_(i−1) by α about x_i (right-hand "
+                           "rule: counter-clockwise seen from the tip of x_i) must bring it onto z_i (rule 13)."))
         else:
-            items.append(f"α: turning z_(i−1) by your α = {_num(alpha)}° about x_i does not bring it "
-                         "onto z_i (rule 13).")
+            items.append(_("α: turning z_(i−1) by your α = {alpha}° about x_i does not bring it onto z_i "
+                           "(rule 13).").format(alpha=_num(alpha)))
     if items:
         return _wrong(name, items)
-    return _right(name, ["Rz(θ)·Tz(d)·Tx(a)·Rx(α) carries {S_(i−1)} exactly onto {S_i}."])
+    return _right(name, [_("Rz(θ)·Tz(d)·Tx(a)·Rx(α) carries {S_(i−1)} exactly onto {S_i}.")])

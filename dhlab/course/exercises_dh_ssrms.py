@@ -5,6 +5,7 @@ import numpy as np
 
 from .. import robots
 from ..dh import DHRobot
+from ..i18n import _
 from ..transforms import trans
 from ..validation import DHLabError, as_index, describe
 from .exercises import Feedback, check_value
@@ -30,37 +31,37 @@ def thlist_slot(joint: int, robot=None) -> int:
 def check_thlist_slots(slots, robot=None) -> Feedback:
     """Check ``{joint: THList index}``: the slot a key must overwrite to move each SSRMS joint."""
     robot = robots.ssrms() if robot is None else _as_robot(robot)
-    name = "your THList slots"
+    name = _("your THList slots")
     if _blank(slots):
         return _unanswered(name)
     if not isinstance(slots, dict):
-        return _wrong(name, [f"give a dict {{joint: index}} for joints 1 … {robot.n}, not a "
-                             f"{type(slots).__name__}."])
+        return _wrong(name, [_("give a dict {{joint: index}} for joints 1 … {n}, not a {type}.").format(
+            n=robot.n, type=type(slots).__name__)])
     items = []
     for joint in range(1, robot.n + 1):
         if joint not in slots:
-            items.append(f"joint {joint}: missing.")
+            items.append(_("joint {joint}: missing.").format(joint=joint))
             continue
         given = _whole_number(slots[joint])
         if given is None:
-            items.append(f"joint {joint}: {short_repr(slots[joint], 30)} is not an index "
-                         "(a whole number such as 5).")
+            items.append(_("joint {joint}: {value} is not an index (a whole number such as 5).").format(
+                joint=joint, value=short_repr(slots[joint], 30)))
             continue
         right = thlist_slot(joint, robot)
         if given == right:
             continue
         if given == right + 1:
-            why = (f"THList[{given}] is link {joint}'s Tx[α, a] factor, which never changes: the key must "
-                   f"rebuild the factor that holds θ{joint}")
+            why = _("THList[{given}] is link {joint}'s Tx[α, a] factor, which never changes: the key must rebuild "
+                    "the factor that holds θ{joint}").format(given=given, joint=joint)
         elif given == right - 2:
-            owner = "the base" if joint == 1 else f"joint {joint - 1}"
-            why = (f"THList[{given}] is the Tz factor of {owner}: count the base's pair too (the base is "
-                   "a model of its own, with its Tz and Tx)")
+            owner = _("the base") if joint == 1 else _("joint {k}").format(k=joint - 1)
+            why = _("THList[{given}] is the Tz factor of {owner}: count the base's pair too (the base is a model of "
+                    "its own, with its Tz and Tx)").format(given=given, owner=owner)
         else:
-            why = "the list holds two factors per link, Tz then Tx, and the base's pair comes first"
-        items.append(f"joint {joint}: not THList[{given}]: {why}.")
+            why = _("the list holds two factors per link, Tz then Tx, and the base's pair comes first")
+        items.append(_("joint {joint}: not THList[{given}]: {why}.").format(joint=joint, given=given, why=why))
     return _wrong(name, items) if items else _right(
-        name, ["Joint k's key overwrites THList[2k], its Tz[θ_k, d_k] factor."])
+        name, [_("Joint k's key overwrites THList[2k], its Tz[θ_k, d_k] factor.")])
 
 
 def parallel_pairs(robot=None, samples: int = 200, seed: int = 0) -> set:
@@ -110,30 +111,32 @@ def check_parallel_pairs(pairs, robot=None) -> Feedback:
     """Check the set of joint pairs (j, k) whose axes stay parallel at every configuration
     (default robot: the SSRMS)."""
     robot = robots.ssrms() if robot is None else _as_robot(robot)
-    name = "your set of parallel pairs"
+    name = _("your set of parallel pairs")
     if _blank(pairs):
         return _unanswered(name)
     given = _read_pairs(pairs)
     if given is None:
-        return _wrong(name, ["give a set of pairs of joint numbers, e.g. {(1, 2), (2, 5)}."])
+        return _wrong(name, [_("give a set of pairs of joint numbers, e.g. {(1, 2), (2, 5)}.")])
     if any(len(p) != 2 or p[0] == p[1] or not all(1 <= v <= robot.n for v in p) for p in given):
-        return _wrong(name, [f"each pair must be two different joint numbers from 1 to {robot.n}."])
+        return _wrong(name, [_("each pair must be two different joint numbers from 1 to {n}.").format(n=robot.n)])
     right = parallel_pairs(robot)
     F0 = np.asarray(robot.frames(robot.qz), dtype=float)
     items = []
     for j, k in sorted(given - right):
         at_zero = np.linalg.norm(np.cross(F0[j - 1, :3, 2], F0[k - 1, :3, 2])) < 1e-9
         q = _counterexample(robot, j, k)
-        shown = "" if q is None else f": at θ = {_vec(q, 0)}° they are not"
-        items.append(f"joints {j} and {k}: " + ("parallel at θ = 0, but not at every configuration"
-                     if at_zero else "their axes are not parallel") + shown + ".")
+        shown = "" if q is None else _(": at θ = {q}° they are not").format(q=_vec(q, 0))
+        what = _("parallel at θ = 0, but not at every configuration") if at_zero else _("their axes are not parallel")
+        items.append(_("joints {j} and {k}: {what}").format(j=j, k=k, what=what) + shown + ".")
     missed = len(right - given)
     if missed:          # how many, not which: finding them is the exercise
-        items.append(f"{missed} pair{'s' if missed > 1 else ''} of joints whose axes stay parallel at every "
-                     f"configuration {'are' if missed > 1 else 'is'} missing from your set (being parallel is "
-                     "transitive).")
+        items.append((_("{k} pairs of joints whose axes stay parallel at every configuration are missing from your "
+                        "set (being parallel is transitive).") if missed > 1 else
+                      _("{k} pair of joints whose axes stay parallel at every configuration is missing from your "
+                        "set (being parallel is transitive).")).format(k=missed))
     return _wrong(name, items) if items else _right(
-        name, ["Exactly these pairs stay parallel: " + ", ".join(f"({j}, {k})" for j, k in sorted(right)) + "."])
+        name, [_("Exactly these pairs stay parallel: {pairs}.").format(
+            pairs=", ".join(f"({j}, {k})" for j, k in sorted(right)))])
 
 
 def printed_key_position(joints, robot=None) -> np.ndarray:
@@ -162,13 +165,14 @@ def _pressed(joints, n: int) -> tuple:
     """The joints whose keys are pressed, in order, each once: one joint number (1 … n) or several."""
     if isinstance(joints, np.ndarray):
         if joints.ndim > 1:
-            raise DHLabError(f"joints must be one joint number or a list of them, got {describe(joints)}.")
+            raise DHLabError(_("joints must be one joint number or a list of them, got {value}.").format(
+                value=describe(joints)))
         joints = joints.tolist()            # a number (0-d) or a list of numbers
     if isinstance(joints, (list, tuple, set, frozenset, range)):
         if not len(joints):
-            raise DHLabError("joints is empty: name the joint whose key is pressed (1 … "
-                             f"{n}), or several, e.g. (2, 5).")
-        return tuple(dict.fromkeys(as_index(j, "each joint of joints", 1, n) for j in joints))
+            raise DHLabError(_("joints is empty: name the joint whose key is pressed (1 … {n}), or several, e.g. "
+                               "(2, 5).").format(n=n))
+        return tuple(dict.fromkeys(as_index(j, _("each joint of joints"), 1, n) for j in joints))
     return (as_index(joints, "joints", 1, n),)
 
 
@@ -178,17 +182,19 @@ def check_key_jump(position, joints=(2, 5), robot=None) -> Feedback:
     robot = robots.ssrms() if robot is None else _as_robot(robot, kind=DHRobot)
     joints = _pressed(joints, robot.n)
     correct = np.asarray(robot.fk(robot.qz), dtype=float)[:3, 3]
-    mistakes = [(correct, "that is where the correct code (THz) puts it. With the printed THx, slot "
-                          "THList[2k] receives the identity: the last Tx that configurarTH built is the "
-                          "gripper's Tx[0, 0].")]
+    mistakes = [(correct, _("that is where the correct code (THz) puts it. With the printed THx, slot "
+                            "THList[2k] receives the identity: the last Tx that configurarTH built is the "
+                            "gripper's Tx[0, 0]."))]
     if len(joints) > 1:
         for k in joints:
-            mistakes.append((printed_key_position(k, robot), f"that is the jump of joint {k}'s key alone: "
-                             "each pressed key overwrites its own slot, and the slots stay overwritten."))
-    feedback = check_value(position, printed_key_position(joints, robot), name="your position",
+            mistakes.append((printed_key_position(k, robot), _(
+                "that is the jump of joint {k}'s key alone: each pressed key overwrites its own slot, and the slots "
+                "stay overwritten.").format(k=k)))
+    feedback = check_value(position, printed_key_position(joints, robot), name=_("your position"),
                            components=("x", "y", "z"), mistakes=mistakes)
     if feedback.ok:
         lost = ", ".join(f"d{k} = {_num(float(robot.links[k - 1].d))}" for k in joints)
-        feedback.items.append(f"The factors Tz[θk, dk] of joints {', '.join(map(str, joints))} became the "
-                              f"identity: those joints are frozen and their offsets ({lost}) are lost.")
+        feedback.items.append(_("The factors Tz[θk, dk] of joints {joints} became the identity: those joints are "
+                                "frozen and their offsets ({lost}) are lost.").format(
+                                    joints=", ".join(map(str, joints)), lost=lost))
     return feedback

@@ -19,11 +19,12 @@ from __future__ import annotations
 
 import html
 
+from ..i18n import N_, _
 from ..validation import DHLabError
 
 __all__ = ["Feedback", "Exercise", "NOT_ANSWERED", "short_repr"]
 
-NOT_ANSWERED = "not answered yet: replace the ... with your answer, then run the cell again."
+NOT_ANSWERED = N_("not answered yet: replace the ... with your answer, then run the cell again.")
 
 
 class Feedback:
@@ -39,7 +40,8 @@ class Feedback:
 
     def __init__(self, status: str, title: str, items=(), tip: str = ""):
         if status not in self.MARKS:
-            raise DHLabError(f"status must be one of {sorted(self.MARKS)}, got {status!r}.")
+            raise DHLabError(_("status must be one of {choices}, got {status!r}.").format(
+                choices=sorted(self.MARKS), status=status))
         self.status, self.title, self.items, self.tip = status, title, list(items), tip
 
     @property
@@ -70,15 +72,15 @@ class Feedback:
 
 def correct(name, note: str = "") -> Feedback:
     """A right answer; ``note`` (e.g. about the decimals typed) becomes its one item."""
-    return Feedback("correct", f"correct: {name} is right.", [note] if note else [])
+    return Feedback("correct", _("correct: {name} is right.").format(name=name), [note] if note else [])
 
 
 def wrong(name, items) -> Feedback:
-    return Feedback("wrong", f"{name} is not right yet.", items)
+    return Feedback("wrong", _("{name} is not right yet.").format(name=name), items)
 
 
 def unanswered(name) -> Feedback:
-    return Feedback("unanswered", f"{name}: {NOT_ANSWERED}")
+    return Feedback("unanswered", f"{name}: {_(NOT_ANSWERED)}")
 
 
 def short_repr(x, width: int = 60) -> str:
@@ -87,7 +89,7 @@ def short_repr(x, width: int = 60) -> str:
     try:
         text = repr(x)
     except Exception:                     # RecursionError, or whatever a student's __repr__ raises
-        text = f"<a {type(x).__name__} that cannot be printed>"
+        text = _("<a {type} that cannot be printed>").format(type=type(x).__name__)
     return text if len(text) <= width else text[:width - 3] + "…"
 
 
@@ -110,28 +112,29 @@ class Exercise:
         try:
             feedback = self._check(answer)
         except Exception as exc:          # an answer no check foresaw: still feedback, never a traceback
-            feedback = wrong("your answer", [
-                f"it could not be compared with the right one ({type(exc).__name__}): give numbers, "
-                f"sympy expressions or lists of them, as the comment in the cell shows. You gave "
-                f"{_describe(answer)}."])
-        feedback.title = f"Exercise {self.key}: {feedback.title}"
+            feedback = wrong(_("your answer"), [_(
+                "it could not be compared with the right one ({error}): give numbers, sympy expressions or "
+                "lists of them, as the comment in the cell shows. You gave {answer}.").format(
+                    error=type(exc).__name__, answer=_describe(answer))])
+        feedback.title = _("Exercise {key}: {title}").format(key=self.key, title=feedback.title)
         if feedback.status == "wrong" and self.hints:
             n = len(self.hints)
-            feedback.tip = f"Stuck? Call .hint() on this exercise ({n} hint{'s' if n > 1 else ''})."
+            feedback.tip = (_("Stuck? Call .hint() on this exercise ({n} hints).") if n > 1 else
+                            _("Stuck? Call .hint() on this exercise ({n} hint).")).format(n=n)
         return feedback
 
     def hint(self, k: int | None = None) -> Feedback:
         if not self.hints:
-            return Feedback("hint", f"Exercise {self.key} has no hints.")
+            return Feedback("hint", _("Exercise {key} has no hints.").format(key=self.key))
         if k is None:
             k = min(self._next_hint, len(self.hints) - 1) + 1
             self._next_hint = min(self._next_hint + 1, len(self.hints))
         if isinstance(k, bool) or not isinstance(k, int) or not 1 <= k <= len(self.hints):
-            raise DHLabError(f"hint number must be a whole number 1…{len(self.hints)}, got {k!r}: "
-                             ".hint() gives the next one.")
-        more = " (call .hint() again for the next)" if k < len(self.hints) else ""
-        return Feedback("hint", f"Hint {k} of {len(self.hints)} for exercise {self.key}{more}:",
-                        [self.hints[k - 1]])
+            raise DHLabError(_("hint number must be a whole number 1…{n}, got {k!r}: .hint() gives the next "
+                               "one.").format(n=len(self.hints), k=k))
+        title = (_("Hint {k} of {n} for exercise {key} (call .hint() again for the next):") if k < len(self.hints)
+                 else _("Hint {k} of {n} for exercise {key}:"))
+        return Feedback("hint", title.format(k=k, n=len(self.hints), key=self.key), [_(self.hints[k - 1])])
 
     def __repr__(self):
-        return f"<Exercise {self.key}: {self.title}>"
+        return _("<Exercise {key}: {title}>").format(key=self.key, title=_(self.title))

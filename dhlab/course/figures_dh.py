@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..i18n import _
 from ..lines import Line, relation
 from ..views.figures import new_figure
 from .figures_common import AXIS_COLORS, fit_box, label, triad
@@ -54,10 +55,11 @@ def cases_figure(z_prev, examples):
         label(ax, O + 0.85 * x, "$x_i$", color=AXIS_COLORS[0])
         ax.plot(*O[:, None], "o", color="black", ms=7)
         label(ax, O + (0.1, 0.0, -0.25), "$O_i$")
-        note = "normal of length 0" if rel.kind == "intersect" else f"common normal, length {rel.distance:g}"
+        note = (_("normal of length 0") if rel.kind == "intersect" else
+                _("common normal, length {length:g}").format(length=rel.distance))
         ax.text2D(0.5, 0.02, note, transform=ax.transAxes, ha="center", fontsize=12)
         ax.set(xlim=(-1, 1.5), ylim=(-1.2, 1.2), zlim=(-0.6, 2.1))
-        ax.set_title(f"{name}: {rel.kind}", fontsize=14)
+        ax.set_title("{}: {}".format(_(name), _(rel.kind)), fontsize=14)    # a case named by N_ is translated
         _no_ticks(ax)
         ax.set_box_aspect((2.5, 2.4, 2.7), zoom=1.05)
         ax.view_init(elev=18, azim=-62)
@@ -130,7 +132,7 @@ def dh_parameters_figure(theta_deg: float = 50.0, d: float = 1.2, a: float = 1.2
     _no_ticks(ax)
     ax.set_axis_off()
     ax.view_init(*camera)
-    ax.set_title("the four DH parameters of link $i$", fontsize=14)
+    ax.set_title(_("the four DH parameters of link $i$"), fontsize=14)
     return fig
 
 
@@ -160,7 +162,7 @@ def _draw_axes(ax, axes, length, tool):
 
 def _axes_box(ax, axes, tool, length):
     points = [np.asarray(p, float) + s * np.asarray(u, float) / np.linalg.norm(u)
-              for p, u, _ in axes for s in (-1.2 * length, 2.3 * length)]
+              for p, u, _kind in axes for s in (-1.2 * length, 2.3 * length)]
     if tool is not None:
         tool = np.asarray(tool, float)
         points.append(tool[:3, 3] if tool.shape == (4, 4) else tool)
@@ -172,7 +174,7 @@ def _axes_box(ax, axes, tool, length):
     ax.set_box_aspect(np.ptp(np.array(points), axis=0) + 0.1, zoom=0.88)      # room for the axis labels
 
 
-def exercise_axes_figure(axes, tool=None, length: float = 0.22, title: str = "the 4-axis arm at q = 0: joint axes"):
+def exercise_axes_figure(axes, tool=None, length: float = 0.22, title: str | None = None):
     """Exercise 5.1's picture: each joint axis ``(point, direction, kind)`` as a dotted line with an arrow
     (the positive sense), labelled z_0, z_1, … (joint k's axis is z_(k−1)), and the end effector (star).
     The camera is chosen so that no two axes look as if they met unless they do. Returns the figure."""
@@ -182,7 +184,7 @@ def exercise_axes_figure(axes, tool=None, length: float = 0.22, title: str = "th
     _draw_axes(ax, axes, length, tool)
     _axes_box(ax, axes, tool, length)
     ax.view_init(**_EXERCISE_CAMERA)
-    ax.set_title(title, fontsize=13)
+    ax.set_title(_("the 4-axis arm at q = 0: joint axes") if title is None else title, fontsize=13)
     return fig
 
 
@@ -193,21 +195,21 @@ def common_normals_figure(axes, tool=None, length: float = 0.22):
     fig.subplots_adjust(left=0.01, right=0.98, bottom=0.1, top=0.92, wspace=0.15)
     ax = fig.add_subplot(1, 2, 1, projection="3d")
     _draw_axes(ax, axes, length, tool)
-    lines = [Line(p, u) for p, u, _ in axes]
+    lines = [Line(p, u) for p, u, _kind in axes]
     for k, (a, b) in enumerate(zip(lines, lines[1:])):
         rel = relation(a, b)
         end = rel.foot
         start = a.nearest_point(end)
         if rel.kind == "intersect":
             ax.plot(*end[:, None], "o", ms=12, mfc="none", mec=NORMAL_COLOR, mew=2)
-            text, at = f"$z_{k}, z_{k + 1}$ meet", end + (-0.06, 0.0, 0.1)
+            text, at = _("$z_{k}, z_{k1}$ meet").format(k=k, k1=k + 1), end + (-0.06, 0.0, 0.1)
         else:
             _segment(ax, start, end, color=NORMAL_COLOR, lw=3)
             text, at = f"{rel.distance:g} m", (start + end) / 2 + (0.0, 0.0, 0.07)
         label(ax, at, text, fontsize=13, ha="right" if rel.kind == "intersect" else "center")
     _axes_box(ax, axes, tool, length)
     ax.view_init(**_EXERCISE_CAMERA)
-    ax.set_title("common normals of $z_0 z_1$, $z_1 z_2$, $z_2 z_3$", fontsize=13)
+    ax.set_title(_("common normals of $z_0 z_1$, $z_1 z_2$, $z_2 z_3$"), fontsize=13)
     side = fig.add_subplot(1, 2, 2)
     _along_y(side, axes, lines, length, tool)
     return fig
@@ -217,14 +219,14 @@ def common_normals_after(answer, axes, tool=None):
     """:func:`common_normals_figure`, but only once ``answer`` (the student's answer to 5.1) is given: while
     it is still ``...`` this prints how to go on and returns None, so the stored notebook gives nothing away."""
     if answer is Ellipsis or answer is None:
-        print("Answer exercise 5.1 first (replace the ... in its cell and run it), then run this cell again.")
+        print(_("Answer exercise 5.1 first (replace the ... in its cell and run it), then run this cell again."))
         return None
     return common_normals_figure(axes, tool)
 
 
 def _along_y(ax, axes, lines, length, tool):
     """The axes seen along +y (x to the right, z up): an axis along y is a point (⊗: pointing away)."""
-    for k, (line, (p, u, _)) in enumerate(zip(lines, axes)):
+    for k, (line, (p, u, _kind)) in enumerate(zip(lines, axes)):
         p2, u2 = line.point[[0, 2]], line.direction[[0, 2]]
         if np.linalg.norm(u2) < 1e-9:
             ax.plot(*p2, ls="", marker="o", ms=16, mfc="white", mec=AXIS_COLORS[2], mew=2)
@@ -249,7 +251,7 @@ def _along_y(ax, axes, lines, length, tool):
         tool = np.asarray(tool, float)
         tool = tool[:3, 3] if tool.shape == (4, 4) else tool
         ax.plot(tool[0], tool[2], "*", color="darkorange", mec="k", ms=16)
-    ax.set(aspect="equal", xlabel="x [m]", ylabel="z [m]", title="seen along y (⊗: an axis along y)")
+    ax.set(aspect="equal", xlabel="x [m]", ylabel="z [m]", title=_("seen along y (⊗: an axis along y)"))
     ax.title.set_fontsize(13)
     ax.margins(0.15)
     ax.grid(alpha=0.3)
@@ -276,5 +278,5 @@ def row_frames_figure(S_prev, S_next, length: float = 0.25, name_offsets=((0.16,
     for axis, pad in ((ax.xaxis, 10), (ax.yaxis, 10), (ax.zaxis, 15)):
         axis.labelpad = pad
     ax.set_box_aspect(np.ptp(P, axis=0) + 0.1, zoom=0.9)
-    ax.set_title(r"exercise 5.2: $\{S_{i-1}\}$ and $\{S_i\}$ in the world", fontsize=13)
+    ax.set_title(_(r"exercise 5.2: $\{S_{i-1}\}$ and $\{S_i\}$ in the world"), fontsize=13)
     return fig

@@ -30,7 +30,8 @@ def clip_segment(a, b, lo, hi):
 
 def frame_pairs_figure(robot, q=None, length: float | None = None, titles=None):
     """One picture per row of the DH table: frame {S_(i-1)} faint, {S_i} bold (x, y, z
-    lettered), the arm in grey, each box fitted around its two frames so nothing is cut.
+    lettered), the arm in grey, each box fitted around its two frames so nothing is cut;
+    three pictures a row (up to four rows of the table: all in one row).
 
     ``titles`` (one text per row) replaces the default "row i".
     """
@@ -40,11 +41,13 @@ def frame_pairs_figure(robot, q=None, length: float | None = None, titles=None):
     origins = F[:, :3, 3]
     length = _checked_length(length) if length is not None else 0.22 * max(float(np.ptp(origins, axis=0).max()), 1e-9)
     titles = _checked_titles(titles, robot.n)
-    rows = math.ceil(robot.n / 3)
-    fig = new_figure((12, 4.3 * rows), layout=None)
-    fig.subplots_adjust(left=0.01, right=0.99, bottom=0.01, top=0.93, wspace=0.02, hspace=0.14)
+    cols = robot.n if robot.n <= 4 else 3          # up to four pictures in one row (one screen of a deck)
+    rows = math.ceil(robot.n / cols)
+    height = 4.3 * rows * 3 / cols
+    fig = new_figure((12, height), layout=None)
+    fig.subplots_adjust(left=0.01, right=0.99, bottom=0.01, top=1 - 0.5 / height, wspace=0.02, hspace=0.14)
     for i in range(1, robot.n + 1):
-        ax = fig.add_subplot(rows, 3, i, projection="3d", proj_type="ortho")
+        ax = fig.add_subplot(rows, cols, i, projection="3d", proj_type="ortho")
         pair = F[i - 1:i + 1]
         seen = np.vstack([pair[:, :3, 3], *letter_points(pair, length, gap=0.35)])
         centre = (seen.min(axis=0) + seen.max(axis=0)) / 2

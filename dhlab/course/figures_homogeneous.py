@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.lines import Line2D
 
+from ..i18n import N_, _
 from ..transforms import Rx, Rz, trans
 from ..units import deg2rad
 from ..views.figures import new_figure
@@ -33,12 +34,12 @@ def two_steps(reading: str, angle_deg: float = 90.0, distance: float = 1.0) -> d
 # Where the words go in each panel (data units), placed by eye so that no text sits on a line:
 # in each reading some axis of one frame runs on along an axis of another.
 _LAYOUT = {
-    "moving": dict(title=r"moving frame: $R_z(90°)\cdot\mathrm{Tr}(1,0,0)$",
-                   move="2: move 1\nalong the\nnew $x'$", move_side=(0.3, 0), move_text_at=(0.4, 0.62),
+    "moving": dict(title=N_(r"moving frame: $R_z(90°)\cdot\mathrm{Tr}(1,0,0)$"),
+                   move=N_("2: move 1\nalong the\nnew $x'$"), move_side=(0.3, 0), move_text_at=(0.4, 0.62),
                    turn_text_at=(0.3, -0.15), S0_at=(-0.3, -0.24), S1_at=(0.25, 1.22),
                    start_shifts=((0.07, 0), (-0.13, -0.08), (0, 0))),
-    "fixed": dict(title=r"fixed frame: $\mathrm{Tr}(1,0,0)\cdot R_z(90°)$",
-                  move="2: move 1 along $x_0$", move_side=(0, -0.22), move_text_at=(0.5, -0.42),
+    "fixed": dict(title=N_(r"fixed frame: $\mathrm{Tr}(1,0,0)\cdot R_z(90°)$"),
+                  move=N_("2: move 1 along $x_0$"), move_side=(0, -0.22), move_text_at=(0.5, -0.42),
                   turn_text_at=(0.25, 0.2), S0_at=(-0.3, -0.24), S1_at=(1.3, -0.22),
                   start_shifts=((-0.06, -0.12), (-0.13, -0.08), (0, 0))),
 }
@@ -51,7 +52,7 @@ def _turn_arc(ax, text_at, radius=0.2):
     ax.annotate("", xy=(radius * np.cos(np.radians(86)), radius * np.sin(np.radians(86))),
                 xytext=(radius * np.cos(t[-2]), radius * np.sin(t[-2])),
                 arrowprops=dict(arrowstyle="-|>", color="0.35", lw=1.5, mutation_scale=14))
-    label(ax, text_at, "1: turn 90°", color="0.2", ha="left")
+    label(ax, text_at, _("1: turn 90°"), color="0.2", ha="left")
 
 
 def _move_arrow(ax, start, end, side, text, text_at):
@@ -73,6 +74,7 @@ def two_step_figure():
     axes = fig.subplots(1, 2, sharey=True)
     for ax, (reading, where) in zip(axes, _LAYOUT.items()):
         frames = two_steps(reading)
+        title, move = where["title"], where["move"]             # marked N_ above: translated here
         triad(ax, frames["start"], 0.4, sub="0", lw=1.8, alpha=0.5, shifts=where["start_shifts"],
               gid=f"{reading}:start")
         triad(ax, frames["step 1"], 0.72, names=("$x'$", "$y'$", "$z'$"), lw=2.2, ls=(0, (4, 2)),
@@ -80,20 +82,20 @@ def two_step_figure():
         triad(ax, frames["step 2"], 0.45, sub="1", lw=3.2, shifts=((0, 0), (0, 0.1), (0, 0)),
               gid=f"{reading}:step 2")
         _turn_arc(ax, where["turn_text_at"])
-        _move_arrow(ax, frames["step 1"][:3, 3], frames["step 2"][:3, 3], where["move_side"], where["move"],
+        _move_arrow(ax, frames["step 1"][:3, 3], frames["step 2"][:3, 3], where["move_side"], _(move),
                     where["move_text_at"])
         label(ax, where["S0_at"], r"$\{S_0\}$", color="0.3")
         label(ax, where["S1_at"], r"$\{S_1\}$")
         ax.set(xlim=(-1.1, 1.75), ylim=(-0.75, 1.75), aspect="equal", xlabel="$x_0$")
-        ax.set_title(where["title"], fontsize=13)
+        ax.set_title(_(title), fontsize=13)
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("$y_0$")
-    fig.suptitle("turn 90° about z, then move 1 along x: two readings", fontsize=14)
-    handles = [Line2D([], [], color="0.3", lw=1.8, alpha=0.5, label=r"$\{S_0\}$, the start"),
-               Line2D([], [], color="0.3", lw=2.2, ls=(0, (4, 2)), label="after step 1 (the turn)"),
-               Line2D([], [], color="0.3", lw=3.2, label=r"$\{S_1\}$, after step 2 (the move)"),
+    fig.suptitle(_("turn 90° about z, then move 1 along x: two readings"), fontsize=14)
+    handles = [Line2D([], [], color="0.3", lw=1.8, alpha=0.5, label=_(r"$\{S_0\}$, the start")),
+               Line2D([], [], color="0.3", lw=2.2, ls=(0, (4, 2)), label=_("after step 1 (the turn)")),
+               Line2D([], [], color="0.3", lw=3.2, label=_(r"$\{S_1\}$, after step 2 (the move)")),
                Line2D([], [], ls="", marker="o", ms=9, mfc="white", mec=AXIS_COLORS[2], mew=1.8,
-                      label="$z$, towards you")]
+                      label=_("$z$, towards you"))]
     fig.legend(handles=handles, loc="outside lower center", ncols=4, fontsize=12, frameon=False)
     return fig
 
@@ -119,11 +121,11 @@ def frame_panel(theta_deg=30.0, a=1.0, alpha_deg=45.0):
     letters = [label(ax, (0, 0, 0), f"${k}$", color=c) for k, c in zip(LETTERS, AXIS_COLORS)]
     dashed_letters = [label(ax, (0, 0, 0), f"${k}$", color=c, alpha=0.8) for k, c in zip(LETTERS, AXIS_COLORS)]
     live.add_moving(*solid, *dashed, *letters, *dashed_letters)
-    moving_name = r"about the moving axes: $R_z(\theta)\,\mathrm{Tr}(a,0,0)\,R_x(\alpha)$"
-    fixed_name = r"about the fixed axes: $R_x(\alpha)\,\mathrm{Tr}(a,0,0)\,R_z(\theta)$"
+    moving_name = _(r"about the moving axes: $R_z(\theta)\,\mathrm{Tr}(a,0,0)\,R_x(\alpha)$")
+    fixed_name = _(r"about the fixed axes: $R_x(\alpha)\,\mathrm{Tr}(a,0,0)\,R_z(\theta)$")
     handles = [Line2D([], [], color="0.3", lw=3, label=moving_name),
                Line2D([], [], color="0.3", lw=2, ls="--", label=fixed_name),
-               Line2D([], [], color="0.3", lw=1.5, alpha=0.5, label=r"$\{S_0\}$, the fixed frame")]
+               Line2D([], [], color="0.3", lw=1.5, alpha=0.5, label=_(r"$\{S_0\}$, the fixed frame"))]
     live.figure.legend(handles=handles, loc="lower center", fontsize=11, frameon=False)
     sliders = [widgets.FloatSlider(value=theta_deg, min=-180, max=180, step=1, description="θ [°]"),
                widgets.FloatSlider(value=a, min=0, max=1.2, step=0.01, description="a"),
@@ -142,9 +144,10 @@ def frame_panel(theta_deg=30.0, a=1.0, alpha_deg=45.0):
             for k, text in enumerate(texts):
                 text.set_position_3d(T[:3, 3] + 0.98 * T[:3, k])
         live.refresh()
-        moving_html.value = matrix_html(T_moving,
-                                        "moving axes (solid): R<sub>z</sub>(θ)·Tr(a,0,0)·R<sub>x</sub>(α)")
-        fixed_html.value = matrix_html(T_fixed, "fixed axes (dashed): R<sub>x</sub>(α)·Tr(a,0,0)·R<sub>z</sub>(θ)")
+        moving_html.value = matrix_html(
+            T_moving, _("moving axes (solid): R<sub>z</sub>(θ)·Tr(a,0,0)·R<sub>x</sub>(α)"))
+        fixed_html.value = matrix_html(
+            T_fixed, _("fixed axes (dashed): R<sub>x</sub>(α)·Tr(a,0,0)·R<sub>z</sub>(θ)"))
 
     panel.observe_values(sliders, redraw)
     redraw()

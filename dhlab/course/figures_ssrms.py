@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.lines import Line2D
 
+from ..i18n import _
 from ..transforms import Rx
 from ..units import deg2rad
 from ..views.figures import new_figure
@@ -77,14 +78,14 @@ def paso1_figure(robot=None, length: float = 3.5):
 
     robot = robots.ssrms() if robot is None else robot
     fig = new_figure((9.6, 7.0), layout=None)
-    ax = _arm_axes(fig, robot, "Paso 1: each $z_i$ on the axis of joint $A_{i+1}$")
+    ax = _arm_axes(fig, robot, _("Paso 1: each $z_i$ on the axis of joint $A_{i+1}$"))
     for i, line in enumerate(z_axes(robot)):
         ax.plot(*np.array([line.point - 4 * line.direction, line.point + 4.5 * line.direction]).T, **AXIS_LINE)
         label(ax, line.point - 4.9 * line.direction, f"$A_{i + 1}$", color="0.3")
         tip = _arrow(ax, line.point, line.direction, length, AXIS_COLORS[2])
         label(ax, tip + np.array(Z_LABEL_SHIFT.get(i, (1.2, 0, 0.5))), f"$z_{i}$", color=AXIS_COLORS[2])
-    handles = [Line2D([], [], label="axis of joint $A_i$ (articulación)", **AXIS_LINE),
-               Line2D([], [], color=AXIS_COLORS[2], lw=3, label="$z_{i-1}$, on the axis of $A_i$")]
+    handles = [Line2D([], [], label=_("axis of joint $A_i$ (articulación)"), **AXIS_LINE),
+               Line2D([], [], color=AXIS_COLORS[2], lw=3, label=_("$z_{i-1}$, on the axis of $A_i$"))]
     _on_top(ax)
     fig.legend(handles=handles, loc="lower center", ncols=2, fontsize=12, frameon=False)
     return fig
@@ -97,7 +98,7 @@ def paso2_figure(robot=None, length: float = 3.5):
 
     robot = robots.ssrms() if robot is None else robot
     fig = new_figure((9.6, 7.0), layout=None)
-    ax = _arm_axes(fig, robot, "Paso 2: the case of each $x_i$")
+    ax = _arm_axes(fig, robot, _("Paso 2: the case of each $x_i$"))
     for i, line in enumerate(z_axes(robot)):
         ax.plot(*np.array([line.point - 4 * line.direction, line.point + 4 * line.direction]).T,
                 color=AXIS_COLORS[2], lw=1.2, alpha=0.6)
@@ -107,10 +108,11 @@ def paso2_figure(robot=None, length: float = 3.5):
         else:
             ax.plot(*np.array([step.foot, step.origin]).T, **NORMAL)
         tip = _arrow(ax, step.origin, step.x, length, AXIS_COLORS[0])
-        label(ax, tip + (0.7, 0, 0), f"$x_{step.i}$: case {step.case}", color=AXIS_COLORS[0], ha="left")
-    handles = [Line2D([], [], color=AXIS_COLORS[2], lw=1.2, label="$z_i$ lines"),
-               Line2D([], [], ls="", marker="o", ms=9, mfc="white", mec="k", label="case 1: where they meet"),
-               Line2D([], [], label="case 2: a common normal", **NORMAL)]
+        label(ax, tip + (0.7, 0, 0), _("$x_{i}$: case {case}").format(i=step.i, case=step.case),
+              color=AXIS_COLORS[0], ha="left")
+    handles = [Line2D([], [], color=AXIS_COLORS[2], lw=1.2, label=_("$z_i$ lines")),
+               Line2D([], [], ls="", marker="o", ms=9, mfc="white", mec="k", label=_("case 1: where they meet")),
+               Line2D([], [], label=_("case 2: a common normal"), **NORMAL)]
     _on_top(ax)
     fig.legend(handles=handles, loc="lower center", ncols=3, fontsize=12, frameon=False)
     return fig
@@ -123,7 +125,7 @@ def paso3_figure(robot=None, length: float = 3.0):
 
     robot = robots.ssrms() if robot is None else robot
     fig = new_figure((9.6, 7.0), layout=None)
-    ax = _arm_axes(fig, robot, "Paso 3: $y_i = z_i \\times x_i$ completes each $B_i$")
+    ax = _arm_axes(fig, robot, _("Paso 3: $y_i = z_i \\times x_i$ completes each $B_i$"))
     frames = frames_b(robot)
     names = {}
     for i, F in enumerate(frames):
@@ -178,15 +180,15 @@ def links_figure(robot):
     fig = new_figure((12, 7.2), layout=None)
     fig.subplots_adjust(left=0.0, right=1.0, bottom=0.09, top=0.94, wspace=0.0, hspace=0.12)
     rows = int(np.ceil((robot.n + 1) / 4))
-    _link_panel(fig.add_subplot(rows, 4, 1, projection="3d"), None, None, "link 0 (base) in $B_0$")
+    _link_panel(fig.add_subplot(rows, 4, 1, projection="3d"), None, None, _("link 0 (base) in $B_0$"))
     for link in range(1, robot.n + 1):
         B_prev = np.linalg.inv(np.asarray(robot.A(link, 0.0), dtype=float))
-        name = f"link {link} in $B_{link}$" + (" (gripper)" if link == robot.n else "")
+        name = (_("link {k} in $B_{k}$ (gripper)") if link == robot.n else _("link {k} in $B_{k}$")).format(k=link)
         _link_panel(fig.add_subplot(rows, 4, link + 1, projection="3d"), link_skeleton(robot, link),
                     B_prev[:3, 2], name)
-    handles = [Line2D([], [], label="the link: d along $z_{i-1}$, then a along $x_i$", **SKELETON),
-               Line2D([], [], label="axis of joint $i$ (it turns the link)", **PREVIOUS_AXIS),
-               Line2D([], [], label="axis of joint $i+1$: the local $z$", **NEXT_AXIS)]
+    handles = [Line2D([], [], label=_("the link: d along $z_{i-1}$, then a along $x_i$"), **SKELETON),
+               Line2D([], [], label=_("axis of joint $i$ (it turns the link)"), **PREVIOUS_AXIS),
+               Line2D([], [], label=_("axis of joint $i+1$: the local $z$"), **NEXT_AXIS)]
     fig.legend(handles=handles, loc="lower center", ncols=3, fontsize=12, frameon=False)
     return fig
 
@@ -205,8 +207,9 @@ def rot_x_figure():
         ax.annotate("", xy=after, xytext=(0, 0), arrowprops=dict(arrowstyle="-|>", color=color, lw=3,
                                                                  mutation_scale=18))
         side = np.array([-before[1], before[0]]) * 0.14          # "before" and "after" labels apart
-        label(ax, 1.13 * before + side, f"{name} before", color=color, alpha=0.65)
-        label(ax, 1.16 * after - np.array([-after[1], after[0]]) * 0.17, f"{name} after", color=color)
+        label(ax, 1.13 * before + side, _("{name} before").format(name=name), color=color, alpha=0.65)
+        label(ax, 1.16 * after - np.array([-after[1], after[0]]) * 0.17, _("{name} after").format(name=name),
+              color=color)
     arc = np.radians(np.linspace(-5, -82, 30))
     ax.plot(0.55 * np.cos(arc), 0.55 * np.sin(arc), "k", lw=1.2)
     ax.annotate("", xy=(0.55 * np.cos(np.radians(-88)), 0.55 * np.sin(np.radians(-88))),
@@ -217,7 +220,7 @@ def rot_x_figure():
     ax.plot(0, 0, ".", ms=8, color=AXIS_COLORS[0], zorder=6)
     label(ax, (-0.1, 0.1), "x (towards you)", color=AXIS_COLORS[0], ha="right", va="bottom")
     ax.set(xlim=(-1.35, 1.35), ylim=(-1.35, 1.35), aspect="equal", xticks=[], yticks=[])
-    ax.set_title("Rot$_x$(−90°) seen from +x: clockwise", fontsize=13)
+    ax.set_title(_("Rot$_x$(−90°) seen from +x: clockwise"), fontsize=13)
     return fig
 
 
@@ -240,16 +243,16 @@ def seed001_figure(robot, wrong_frames, camera=(12.0, -78.0)):
     view.setup_axes(ax)
     ax.plot(*wrong.T, "--o", color=WRONG_COLOR, lw=2.5, ms=6)
     ax.plot(*wrong[-1:].T, "*", color=WRONG_COLOR, mec="k", ms=18)
-    label(ax, wrong[-1] + (1.5, 0, 1.8), f"seed 001: end at ({_short(wrong[-1])})", color=WRONG_COLOR,
-          ha="left", fontsize=13)
-    label(ax, right[-1] + (-2.0, 0, 0), f"seed 000: end at ({_short(right[-1])})", color="0.2", fontsize=13,
-          ha="right")
+    label(ax, wrong[-1] + (1.5, 0, 1.8), _("seed 001: end at ({point})").format(point=_short(wrong[-1])),
+          color=WRONG_COLOR, ha="left", fontsize=13)
+    label(ax, right[-1] + (-2.0, 0, 0), _("seed 000: end at ({point})").format(point=_short(right[-1])),
+          color="0.2", fontsize=13, ha="right")
     fit_box(ax, np.vstack([wrong, right]), pad=2.5)
     ax.set_box_aspect(np.ptp(np.vstack([wrong, right]), axis=0) + 5, zoom=1.1)
     ax.view_init(*camera)
-    ax.set_title("SSRMS at zero: seed 000's THz reaches out, seed 001's folds up", fontsize=13)
-    handles = [Line2D([], [], color="0.25", lw=3, label="with seed 000's THz (correct)"),
-               Line2D([], [], color=WRONG_COLOR, lw=2.5, ls="--", marker="o", label="with seed 001's THz")]
+    ax.set_title(_("SSRMS at zero: seed 000's THz reaches out, seed 001's folds up"), fontsize=13)
+    handles = [Line2D([], [], color="0.25", lw=3, label=_("with seed 000's THz (correct)")),
+               Line2D([], [], color=WRONG_COLOR, lw=2.5, ls="--", marker="o", label=_("with seed 001's THz"))]
     fig.legend(handles=handles, loc="lower center", ncols=2, fontsize=12, frameon=False)
     return fig
 

@@ -25,6 +25,7 @@ import math
 import numpy as np
 import sympy as sp
 
+from ..i18n import N_, _
 from ..validation import as_choice
 from . import check_options as teacher
 from .answers import Refused, Sampler, canon, close, is_unanswered, rounding_slack, to_sympy_matrix, typed_decimals
@@ -33,8 +34,8 @@ from .feedback import Feedback, correct, unanswered, wrong
 __all__ = ["check_matrix", "TRANSPOSED_ROTATION", "rounding_note", "num"]
 
 MAX_ITEMS = 4            # entries listed one by one; beyond that, "… and k more"
-TRANSPOSED_ROTATION = ("your rotation block is the transpose of the right one: that is the rotation "
-                       "the other way (by −θ instead of θ).")
+TRANSPOSED_ROTATION = N_("your rotation block is the transpose of the right one: that is the rotation "
+                         "the other way (by −θ instead of θ).")
 
 
 def num(v: float) -> str:
@@ -44,12 +45,13 @@ def num(v: float) -> str:
 
 def rounding_note(decimals) -> str:
     """What to say about an answer right only to the decimals typed (2 or more: accepted)."""
-    plural = "s" if decimals != 1 else ""
     if decimals >= 2:
-        return (f"right to the {decimals} decimal{plural} you typed. Keep 3 or more when a result is used "
-                "again: rounding errors grow when matrices are multiplied.")
-    return (f"right to the {decimals} decimal{plural} you typed, but that is too coarse to tell a right answer "
-            "from a near miss: give 3 decimals.")
+        return _("right to the {decimals} decimals you typed. Keep 3 or more when a result is used again: "
+                 "rounding errors grow when matrices are multiplied.").format(decimals=decimals)
+    return (_("right to the {decimals} decimal you typed, but that is too coarse to tell a right answer from a "
+              "near miss: give 3 decimals.") if decimals == 1 else
+            _("right to the {decimals} decimals you typed, but that is too coarse to tell a right answer from a "
+              "near miss: give 3 decimals.")).format(decimals=decimals)
 
 
 def _shown(names) -> str:
@@ -62,8 +64,8 @@ def _trig_in_degrees(M) -> list:
     for f in sorted(M.atoms(sp.sin, sp.cos, sp.tan), key=str):
         arg = f.args[0]
         if not arg.free_symbols and arg.is_real and abs(float(arg)) > 2 * math.pi + 1e-9:
-            found.append(f"{f} takes radians: {sp.sstr(arg)} rad is more than a full turn. If you meant "
-                         f"{sp.sstr(arg)}°, write sp.pi*{sp.sstr(arg)}/180 (or use dhlab.deg2rad).")
+            found.append(_("{f} takes radians: {arg} rad is more than a full turn. If you meant {arg}°, write "
+                           "sp.pi*{arg}/180 (or use dhlab.deg2rad).").format(f=f, arg=sp.sstr(arg)))
     return found
 
 
@@ -72,23 +74,24 @@ def _symbol_problems(student: sp.Matrix, expected_names, allowed, name) -> list:
     unknown = sorted({str(s) for s in student.free_symbols if canon(s) not in allowed})
     if not unknown:
         return []
-    return [f"{name} uses {', '.join(unknown)}, which {'is' if len(unknown) == 1 else 'are'} not "
-            f"a symbol of this exercise: use {_shown(expected_names) or 'numbers only'}."]
+    message = (_("{name} uses {unknown}, which is not a symbol of this exercise: use {use}.") if len(unknown) == 1
+               else _("{name} uses {unknown}, which are not symbols of this exercise: use {use}."))
+    return [message.format(name=name, unknown=", ".join(unknown), use=_shown(expected_names) or _("numbers only"))]
 
 
 def _where(i, j, shape, index_style) -> str:
-    text = f"row {i + 1}, column {j + 1}"
+    text = _("row {i}, column {j}").format(i=i + 1, j=j + 1)
     if index_style == "cpp":
         text += f" (aij[{i}][{j}])"
     elif index_style == "python":
         text += f" ([{i}, {j}])"
     if shape == (4, 4):
         if i < 3 and j < 3:
-            text += ", rotation block"
+            text += _(", rotation block")
         elif i < 3:
-            text += f", translation column ({'xyz'[i]})"
+            text += _(", translation column ({axis})").format(axis="xyz"[i])
         else:
-            text += ", last row"
+            text += _(", last row")
     return text
 
 
@@ -110,11 +113,12 @@ def _shape_problem(got, expected, name):
     if got == expected:
         return ""
     if expected == (4, 4) and got == (3, 3):
-        return (f"{name} is 3×3, but a homogeneous transformation matrix is 4×4: "
-                "[[R, p], [0, 0, 0, 1]], the 3×3 rotation R, the position p, and the row 0 0 0 1.")
+        return _("{name} is 3×3, but a homogeneous transformation matrix is 4×4: [[R, p], [0, 0, 0, 1]], the "
+                 "3×3 rotation R, the position p, and the row 0 0 0 1.").format(name=name)
     if expected == (3, 3) and got == (4, 4):
-        return f"{name} is 4×4: here only the 3×3 rotation block is asked for."
-    return f"{name} has shape {got[0]}×{got[1]}; it must be {expected[0]}×{expected[1]}."
+        return _("{name} is 4×4: here only the 3×3 rotation block is asked for.").format(name=name)
+    return _("{name} has shape {rows}×{cols}; it must be {right_rows}×{right_cols}.").format(
+        name=name, rows=got[0], cols=got[1], right_rows=expected[0], right_cols=expected[1])
 
 
 def check_matrix(student, expected, *, name: str = "your matrix", symbols=(), tol: float = 1e-3,
@@ -153,11 +157,12 @@ def check_matrix(student, expected, *, name: str = "your matrix", symbols=(), to
     allowed = expected_names | {canon(s) for s in symbols}
     problems = _trig_in_degrees(got)
     if expected_names and not got.free_symbols:
-        problems.append(f"{name} has only numbers, but the answer is symbolic: write it with the "
-                        f"symbols {_shown(str(s) for s in expected.free_symbols)} (for every value of them).")
+        problems.append(_("{name} has only numbers, but the answer is symbolic: write it with the symbols "
+                          "{symbols} (for every value of them).").format(
+                              name=name, symbols=_shown(str(s) for s in expected.free_symbols)))
     elif got.free_symbols and not expected_names:
-        problems.append(f"{name} still has the symbols {_shown(str(s) for s in got.free_symbols)}: "
-                        "the answer is numeric, substitute the numbers.")
+        problems.append(_("{name} still has the symbols {symbols}: the answer is numeric, substitute the "
+                          "numbers.").format(name=name, symbols=_shown(str(s) for s in got.free_symbols)))
     else:
         problems += _symbol_problems(got, {str(s) for s in expected.free_symbols}, allowed, name)
     if problems:
@@ -165,9 +170,9 @@ def check_matrix(student, expected, *, name: str = "your matrix", symbols=(), to
 
     decimals = None if got.free_symbols else typed_decimals(student)
     slack = rounding_slack(decimals)
-    known = [(teacher.expected_matrix(w, "a known mistake"), message) for w, message in mistakes]
+    known = [(teacher.expected_matrix(w, _("a known mistake")), _(message)) for w, message in mistakes]
     names = allowed | {canon(s) for s in got.free_symbols}
-    sampler = Sampler(names.union(*({canon(s) for s in W.free_symbols} for W, _ in known)))
+    sampler = Sampler(names.union(*({canon(s) for s in W.free_symbols} for W, _message in known)))
     E, S = sampler.evaluate(expected), sampler.evaluate(got)
     if close(S, E, tol):
         return correct(name)
@@ -182,9 +187,10 @@ def check_matrix(student, expected, *, name: str = "your matrix", symbols=(), to
     missing = sorted(str(s) for s in expected.free_symbols if canon(s) not in used)
     if missing and got.free_symbols:
         substituted = any(not float(f).is_integer() for f in got.atoms(sp.Float))
-        items.insert(0, f"{name} does not use {', '.join(missing)}, but the right matrix does"
-                     + (": keep the parameters as symbols (the answer must hold for every value), "
-                        "do not substitute numbers." if substituted else "."))
+        items.insert(0, (_("{name} does not use {missing}, but the right matrix does: keep the parameters as "
+                           "symbols (the answer must hold for every value), do not substitute numbers.")
+                         if substituted else _("{name} does not use {missing}, but the right matrix does.")).format(
+                             name=name, missing=", ".join(missing)))
     return wrong(name, items)
 
 
@@ -197,26 +203,26 @@ def _matrix_diagnosis(got, expected, S, E, sampler, tol, slack, index_style) -> 
         inverse = np.array([np.linalg.inv(e) for e in E])
         if close(S, inverse, tol, slack):
             if close(E[:, :3, 3], np.zeros_like(E[:, :3, 3]), 1e-12):
-                return [TRANSPOSED_ROTATION]
-            return ["this is the inverse of the right matrix: it maps the other way round "
-                    "(the two frames' roles are swapped)."]
+                return [_(TRANSPOSED_ROTATION)]
+            return [_("this is the inverse of the right matrix: it maps the other way round "
+                      "(the two frames' roles are swapped).")]
     if rows == cols and close(S, np.swapaxes(E, 1, 2), tol, slack):
         if close(np.einsum("kji,kjl->kil", E, E), np.broadcast_to(np.eye(rows), E.shape), 1e-9):
-            return [TRANSPOSED_ROTATION]
-        return ["you wrote the rows as columns: the whole matrix is transposed."]
+            return [_(TRANSPOSED_ROTATION)]
+        return [_("you wrote the rows as columns: the whole matrix is transposed.")]
     if homogeneous:
         if not close(S[:, 3], E[:, 3], tol, slack):
-            items.append(f"the last row must be 0 0 0 1; yours is "
-                         f"{' '.join(_entry_text(v) for v in got[3, :])}.")
+            items.append(_("the last row must be 0 0 0 1; yours is {row}.").format(
+                row=" ".join(_entry_text(v) for v in got[3, :])))
             explained[3] = True
         RS, RE = S[:, :3, :3], E[:, :3, :3]
         if not close(RS, RE, tol, slack) and close(RS, np.swapaxes(RE, 1, 2), tol, slack):
-            items.append(TRANSPOSED_ROTATION)
+            items.append(_(TRANSPOSED_ROTATION))
             explained[:3, :3] = True
         pS, pE = S[:, :3, 3], E[:, :3, 3]
         every_component_used = bool(np.all(np.abs(pE).max(axis=0) > 1e-9))
         if every_component_used and not close(pS, pE, tol, slack) and close(pS, -pE, tol, slack):
-            items.append("the whole translation column has the wrong sign.")
+            items.append(_("the whole translation column has the wrong sign."))
             explained[:3, 3] = True
     if rows == cols == 3 or homogeneous:
         items += _rotation_problems(got, S, slack)
@@ -226,13 +232,13 @@ def _matrix_diagnosis(got, expected, S, E, sampler, tol, slack, index_style) -> 
         items.append(f"{_where(i, j, (rows, cols), index_style)}: "
                      + _entry_problem(got[i, j], expected[i, j], S[:, i, j], E[:, i, j], sampler, tol, slack))
     if len(bad) > MAX_ITEMS:
-        items.append(f"… and {len(bad) - MAX_ITEMS} more entries are not right.")
-    return items or ["it does not match the right matrix."]
+        items.append(_("… and {k} more entries are not right.").format(k=len(bad) - MAX_ITEMS))
+    return items or [_("it does not match the right matrix.")]
 
 
 def _distance_to_rotations(R) -> float:
     """The largest entry-wise distance from R (one 3×3 sample) to the nearest proper rotation."""
-    U, _, Vt = np.linalg.svd(R)
+    U, _singular, Vt = np.linalg.svd(R)
     D = np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt)) or 1.0])
     return float(np.abs(R - U @ D @ Vt).max())
 
@@ -250,29 +256,29 @@ def _rotation_problems(got, S, slack) -> list:
         what = f"det R = {sp.sstr(det)}"
     else:
         what = f"det R = {num(dets[0])}"
-    return [f"your rotation block is not a rotation: {what}, but a rotation has det R = +1 and "
-            "orthonormal columns (RᵀR = I)."
-            + (" A negative determinant is a mirror image." if np.all(dets < -1e-9) else "")]
+    return [_("your rotation block is not a rotation: {what}, but a rotation has det R = +1 and orthonormal "
+              "columns (RᵀR = I).").format(what=what)
+            + (_(" A negative determinant is a mirror image.") if np.all(dets < -1e-9) else "")]
 
 
 def _entry_problem(student, expected, s, e, sampler, tol, slack) -> str:
     mine = _entry_text(student)
     if close(e, np.zeros_like(e), 1e-12):
-        return f"you have {mine}; this entry is 0."
+        return _("you have {mine}; this entry is 0.").format(mine=mine)
     if close(s, -e, tol, slack):
-        return f"you have {mine}: the sign is wrong."
+        return _("you have {mine}: the sign is wrong.").format(mine=mine)
     if isinstance(student, sp.Basic) and student.free_symbols:
         swapped = student.replace(lambda x: isinstance(x, (sp.sin, sp.cos)),
                                   lambda x: (sp.cos if isinstance(x, sp.sin) else sp.sin)(x.args[0]))
         value = sampler.evaluate(sp.Matrix([swapped]))[:, 0, 0]
         if close(value, e, tol):
-            return f"you have {mine}: cos and sin are swapped."
+            return _("you have {mine}: cos and sin are swapped.").format(mine=mine)
         if close(value, -e, tol):
-            return f"you have {mine}: cos and sin are swapped, and the sign is wrong."
+            return _("you have {mine}: cos and sin are swapped, and the sign is wrong.").format(mine=mine)
         slip = _wrong_symbol(student, expected, e, sampler, tol)
         if slip:
-            return f"you have {mine}: {slip}"
-    return f"you have {mine}, which is not right."
+            return f"{_('you have {mine}').format(mine=mine)}: {slip}"
+    return _("you have {mine}, which is not right.").format(mine=mine)
 
 
 def _wrong_symbol(student, expected, e, sampler, tol) -> str:
@@ -287,8 +293,9 @@ def _wrong_symbol(student, expected, e, sampler, tol) -> str:
                 continue
             fixed = sp.Add(*terms[:k], term.xreplace({mine: sp.Symbol(other)}), *terms[k + 1:])
             if close(sampler.evaluate(sp.Matrix([fixed]))[:, 0, 0], e, tol):
-                where = "" if len(terms) == 1 else f" in the term {sp.sstr(term)}"
-                return f"{mine} is the wrong symbol{where}: it should be {other}."
+                message = (_("{mine} is the wrong symbol: it should be {other}.") if len(terms) == 1 else
+                           _("{mine} is the wrong symbol in the term {term}: it should be {other}."))
+                return message.format(mine=mine, other=other, term=sp.sstr(term))
     return ""
 
 
@@ -305,27 +312,29 @@ def check_function(student_fn, reference, cases, *, name: str = "your function",
     name, reference, check = teacher.name(name), teacher.function(reference, "reference"), \
         teacher.function(check, "check")
     cases, mistakes = teacher.cases(cases), teacher.mistakes(mistakes)
-    for wrong_fn, _ in mistakes:
-        teacher.function(wrong_fn, "each known mistake of check_function")
+    for wrong_fn, _message in mistakes:
+        teacher.function(wrong_fn, _("each known mistake of check_function"))
     if describe is not None:
         teacher.function(describe, "describe")
     if is_unanswered(student_fn):
         return unanswered(name)
     if not callable(student_fn):
-        return wrong(name, [f"{name} must be a function (def …), got {type(student_fn).__name__}."])
+        return wrong(name, [_("{name} must be a function (def …), got {type}.").format(
+            name=name, type=type(student_fn).__name__)])
     describe = describe or (lambda args: ", ".join(map(repr, args)))
     results = []
     for args in cases:
         try:
             results.append(student_fn(*args))
         except Exception as exc:                     # the student's code: any error is feedback
-            return wrong(name, [f"calling it with {describe(args)} raised {type(exc).__name__}: {exc}"])
+            return wrong(name, [_("calling it with {args} raised {error}: {message}").format(
+                args=describe(args), error=type(exc).__name__, message=exc)])
     for wrong_fn, message in mistakes:
         if all(check(r, wrong_fn(*args), **options).ok for r, args in zip(results, cases)):
-            return wrong(name, [message])
+            return wrong(name, [_(message)])
     failures, notes = [], set()
     for result, args in zip(results, cases):
-        feedback = check(result, reference(*args), name="the result", **options)
+        feedback = check(result, reference(*args), name=_("the result"), **options)
         if not feedback.ok:
             failures.append((args, feedback))
         notes.update(feedback.items if feedback.ok else ())
@@ -333,4 +342,4 @@ def check_function(student_fn, reference, cases, *, name: str = "your function",
         return correct(name, next(iter(sorted(notes)), ""))
     # the case that shows the most problems tells the most (at θ = 0 a wrong sin is invisible)
     args, feedback = max(failures, key=lambda f: len(f[1].items))
-    return wrong(name, [f"for {describe(args)}:"] + feedback.items)
+    return wrong(name, [_("for {args}:").format(args=describe(args))] + feedback.items)

@@ -25,6 +25,7 @@ import numpy as np
 import sympy as sp
 
 from ..dh import DHRobot, _parse
+from ..i18n import _
 from ..transforms import Rx, Rz, trans
 from ..validation import DHLabError, as_index, as_text, describe
 from .answers import Refused, is_unanswered, to_vector
@@ -45,29 +46,30 @@ class Prediction:
     def __init__(self, question: str, checker, worked):
         self.question = as_text(question, "question")
         if not (callable(checker) and callable(worked)):
-            raise DHLabError("Prediction(question, checker, worked): checker and worked must be functions.")
+            raise DHLabError(_("Prediction(question, checker, worked): checker and worked must be functions."))
         self._checker, self._worked, self.done = checker, worked, False
 
     def check(self, answer, show_me: bool = False) -> Feedback:
         """The feedback on ``answer``; the worked answer only if it is right or ``show_me=True``."""
         if not isinstance(show_me, bool):
-            raise DHLabError(f"show_me must be True or False, got {describe(show_me)}.")
+            raise DHLabError(_("show_me must be True or False, got {got}.").format(got=describe(show_me)))
         if is_unanswered(answer):
             if show_me:
                 return self.show()
-            return Feedback("unanswered", f"predict first: {self.question}",
-                            tip="Replace ... by your prediction and run the cell again. "
-                                "After an honest try, check(answer, show_me=True) shows the worked answer.")
+            return Feedback("unanswered", _("predict first: {question}").format(question=self.question),
+                            tip=_("Replace ... by your prediction and run the cell again. "
+                                  "After an honest try, check(answer, show_me=True) shows the worked answer."))
         feedback = self._checker(answer)
         if feedback.ok or show_me:
             self.done = True
-            feedback.tip = "worked answer: " + self._worked()
+            feedback.tip = _("worked answer: {answer}").format(answer=self._worked())
         return feedback
 
     def show(self) -> Feedback:
         """The worked answer, without a check ("show me")."""
         self.done = True
-        return Feedback("hint", f"shown: {self.question}", tip="worked answer: " + self._worked())
+        return Feedback("hint", _("shown: {question}").format(question=self.question),
+                        tip=_("worked answer: {answer}").format(answer=self._worked()))
 
     def __repr__(self):
         return f"Prediction({self.question!r}, {'done' if self.done else 'not yet predicted'})"
@@ -78,19 +80,20 @@ def reveal(predictions, show):
     ones still open. Holds back a table or a figure that would give the answers away."""
     predictions = list(predictions) if isinstance(predictions, (list, tuple)) else [predictions]
     if not predictions or not all(isinstance(p, Prediction) for p in predictions):
-        raise DHLabError(f"reveal takes a Prediction or a list of them, got {describe(predictions)}.")
+        raise DHLabError(_("reveal takes a Prediction or a list of them, got {got}.").format(got=describe(predictions)))
     if not callable(show):
-        raise DHLabError(f"reveal(predictions, show): show must be a function, got {describe(show)}.")
+        raise DHLabError(_("reveal(predictions, show): show must be a function, got {got}.").format(
+            got=describe(show)))
     open_ = [p.question for p in predictions if not p.done]
     if open_:
-        return Feedback("unanswered", "shown once you have predicted (or asked to be shown):", open_)
+        return Feedback("unanswered", _("shown once you have predicted (or asked to be shown):"), open_)
     return show()
 
 
 # --- a row of a DH table ------------------------------------------------------------------------
 def _robot_link(robot, i):
     if not isinstance(robot, DHRobot):
-        raise DHLabError(f"robot must be a dhlab.DHRobot (standard DH), got {describe(robot)}.")
+        raise DHLabError(_("robot must be a dhlab.DHRobot (standard DH), got {got}.").format(got=describe(robot)))
     return as_index(i, "i (the link)", 1, robot.n)
 
 
@@ -98,7 +101,7 @@ def _at_pose(row, robot, i, q):
     """The student's row as numbers at ``q`` (a joint variable by name takes its value there;
     revolute ones in degrees, as the table's angles), or a reason."""
     if not isinstance(row, (list, tuple)) or len(row) != 4:
-        return None, f"give the row as four entries (θ, d, a, α), got {describe(row)}."
+        return None, _("give the row as four entries (θ, d, a, α), got {got}.").format(got=describe(row))
     joints = {str(s): s for s in robot.q_symbols}
     values, variable_in = [], []
     for value, column in zip(row, "θdaα"):
@@ -109,8 +112,10 @@ def _at_pose(row, robot, i, q):
         if isinstance(entry, sp.Basic):
             unknown = {str(s) for s in entry.free_symbols} - set(joints) - set(robot.params)
             if unknown:
-                return None, f"{column}: {', '.join(sorted(unknown))} is not a name of this robot " \
-                             f"(its joint variables: {', '.join(joints)}; lengths: {', '.join(robot.params)})."
+                return None, _("{column}: {names} is not a name of this robot (its joint variables: {joints}; "
+                               "lengths: {lengths}).").format(column=column, names=", ".join(sorted(unknown)),
+                                                              joints=", ".join(joints),
+                                                              lengths=", ".join(robot.params))
             if any(str(s) in joints for s in entry.free_symbols):
                 variable_in.append((column, entry))
             values_of = {str(s): math.degrees(v) if link.is_revolute else v
@@ -122,14 +127,17 @@ def _at_pose(row, robot, i, q):
     for where, entry in variable_in:
         names = {str(s) for s in entry.free_symbols}
         if names - {mine} or where != column:
-            return None, (f"joint {i} is {'revolute' if column == 'θ' else 'prismatic'}: its variable "
-                          f"{mine} belongs in {column}, and no other joint's variable belongs in row {i}.")
+            message = (_("joint {i} is revolute: its variable {mine} belongs in {column}, and no other joint's "
+                         "variable belongs in row {i}.") if column == "θ" else
+                       _("joint {i} is prismatic: its variable {mine} belongs in {column}, and no other joint's "
+                         "variable belongs in row {i}."))
+            return None, message.format(i=i, mine=mine, column=column)
     return values, ""
 
 
 def _row_text(robot, i):
     line = str(robot.table()).splitlines()[i]              # line 0 is the header
-    return f"row {i} of the table is |{line.split('|', 1)[1]}"
+    return _("row {i} of the table is {row}").format(i=i, row="|" + line.split("|", 1)[1])
 
 
 def row_prediction(robot, i, q=None) -> Prediction:
@@ -144,12 +152,14 @@ def row_prediction(robot, i, q=None) -> Prediction:
     def checker(row):
         values, problem = _at_pose(row, robot, i, q)
         if problem:
-            return _wrong(f"your row {i}", [problem])
+            return _wrong(_("your row {i}").format(i=i), [problem])
         feedback = check_dh_row(values, frames=tuple(frames))
-        feedback.title = feedback.title.replace("your row (", f"your row {i} (")
+        feedback.title = feedback.title.replace(_("your row (θ, d, a, α)"),
+                                                _("your row {i} (θ, d, a, α)").format(i=i))
         return feedback
 
-    return Prediction(f"row {i} (θ{i}, d{i}, a{i}, α{i}) of {robot.name}", checker, lambda: _row_text(robot, i))
+    question = _("row {i} (θ{i}, d{i}, a{i}, α{i}) of {robot}").format(i=i, robot=robot.name)
+    return Prediction(question, checker, lambda: _row_text(robot, i))
 
 
 def check_row_prediction(robot, i, my_row, q=None, show_me: bool = False) -> Feedback:
@@ -163,7 +173,8 @@ def case_prediction(z_prev, z_next, i: int = 1) -> Prediction:
     (point, direction): 'intersect' (case 1), 'parallel' (case 2) or 'skew' (case 3)."""
     for name, axis in (("z_prev", z_prev), ("z_next", z_next)):
         if not isinstance(axis, (list, tuple)) or len(axis) != 2:
-            raise DHLabError(f"{name} must be a pair (point, direction) of a joint axis, got {describe(axis)}.")
+            raise DHLabError(_("{name} must be a pair (point, direction) of a joint axis, got {got}.").format(
+                name=name, got=describe(axis)))
     rel = axis_relation(*z_prev, *z_next)
     truth = "intersect" if rel.kind in ("intersect", "coincident") else rel.kind
     number = {"intersect": 1, "parallel": 2, "skew": 3}[truth]
@@ -171,20 +182,20 @@ def case_prediction(z_prev, z_next, i: int = 1) -> Prediction:
 
     def checker(answer):
         said, problem = _read_case(answer)
-        name = f"your case of x{i}"
+        name = _("your case of x{i}").format(i=i)
         if problem:
             return _wrong(name, [problem])
         if said == truth or (said == "coincident" and rel.kind == "coincident"):
-            return Feedback("correct", f"correct: {name} is right.")
+            return Feedback("correct", _("correct: {name} is right.").format(name=name))
         return _wrong(name, [_refutation(said, rel)])
 
     def worked():
-        where = {1: f"x{i} = ±(z{i - 1} × z{i}), through the intersection point",
-                 2: f"x{i} on any common normal (length {_num(rel.distance)})",
-                 3: f"x{i} on the unique common normal, of length {_num(rel.distance)}"}[number]
-        return f"z{i - 1} and z{i} {'are ' if truth != 'intersect' else ''}{truth}: case {number}, {where}."
+        text = {1: _("z{p} and z{i} intersect: case 1, x{i} = ±(z{p} × z{i}), through the intersection point."),
+                2: _("z{p} and z{i} are parallel: case 2, x{i} on any common normal (length {length})."),
+                3: _("z{p} and z{i} are skew: case 3, x{i} on the unique common normal, of length {length}.")}
+        return text[number].format(p=i - 1, i=i, length=_num(rel.distance))
 
-    return Prediction(f"the case of x{i} (intersect, parallel or skew)", checker, worked)
+    return Prediction(_("the case of x{i} (intersect, parallel or skew)").format(i=i), checker, worked)
 
 
 # --- the step-through's moving frame --------------------------------------------------------------
@@ -207,25 +218,27 @@ def step_prediction(robot, i, step) -> Prediction:
     origin = T[:3, 3]
 
     def checker(answer):
-        name = f"your origin after step {step}"
+        name = _("your origin after step {step}").format(step=step)
         try:
             mine = np.asarray(to_vector(answer, name, 3), dtype=float)
         except (Refused, TypeError, ValueError) as error:
             return _wrong(name, [str(error)])
         if np.allclose(mine, origin, atol=1e-3):
-            return Feedback("correct", f"correct: {name} is right.")
-        items = [f"{name} {_vec(mine)} is not where the first {step} motion(s) of row {i} lead "
-                 f"(in {{S_{i - 1}}}: θ and d move along and about z{i - 1}, a along the turned x)."]
+            return Feedback("correct", _("correct: {name} is right.").format(name=name))
+        items = [_("{name} {mine} is not where the first {step} motion(s) of row {i} lead (in {{S_{p}}}: θ and d "
+                   "move along and about z{p}, a along the turned x).").format(
+                       name=name, mine=_vec(mine), step=step, i=i, p=i - 1)]
         if step >= 3 and np.allclose(mine, _moving_frame(robot, i, 2)[:3, 3], atol=1e-3):
-            items.append("that is the origin after step 2: step 3 moves it by a along the turned x axis.")
+            items.append(_("that is the origin after step 2: step 3 moves it by a along the turned x axis."))
         return _wrong(name, items)
 
     def worked():
-        return (f"after {STEP_NAMES[step]} the origin is at {_vec(origin)} and the x axis along "
-                f"{_vec(T[:3, 0])} (in {{S_{i - 1}}}).")
+        return _("after {motions} the origin is at {origin} and the x axis along {x} (in {{S_{p}}}).").format(
+            motions=STEP_NAMES[step], origin=_vec(origin), x=_vec(T[:3, 0]), p=i - 1)
 
-    return Prediction(f"the origin of the moving frame after step {step} of row {i}, in {{S_{i - 1}}}",
-                      checker, worked)
+    question = _("the origin of the moving frame after step {step} of row {i}, in {{S_{p}}}").format(
+        step=step, i=i, p=i - 1)
+    return Prediction(question, checker, worked)
 
 
 # --- an entry of a link matrix --------------------------------------------------------------------
@@ -236,20 +249,21 @@ def entry_prediction(robot, i, row, col) -> Prediction:
     row, col = as_index(row, "row", 0, 3), as_index(col, "col", 0, 3)
     truth = sp.simplify(robot.link_matrices_sym()[i - 1][row, col])
     names = {str(s): s for s in truth.free_symbols} | {str(s): s for s in robot.q_symbols}
-    where = f"entry ({row}, {col}) of {i - 1}A{i}"
+    where = _("entry ({row}, {col}) of {p}A{i}").format(row=row, col=col, p=i - 1, i=i)
 
     def checker(answer):
-        name = f"your {where}"
+        name = _("your entry ({row}, {col}) of {p}A{i}").format(row=row, col=col, p=i - 1, i=i)
         try:
             mine = sp.sympify(answer, locals=names) if isinstance(answer, str) else sp.sympify(answer)
             mine = mine.subs({s: names[str(s)] for s in mine.free_symbols if str(s) in names})
             same = sp.simplify(sp.expand_trig(mine - truth)) == 0
         except (sp.SympifyError, SyntaxError, TypeError, ValueError, AttributeError):
-            return _wrong(name, [f"cannot read {describe(answer)} as an expression such as sp.cos(q1) or 0."])
+            return _wrong(name, [_("cannot read {got} as an expression such as sp.cos(q1) or 0.").format(
+                got=describe(answer))])
         if same:
-            return Feedback("correct", f"correct: {name} is right.")
-        return _wrong(name, ["compare with the closed form of rule 14, with this row's θ, d, a, α "
-                             "put in (cos and sin of a constant angle are numbers)."])
+            return Feedback("correct", _("correct: {name} is right.").format(name=name))
+        return _wrong(name, [_("compare with the closed form of rule 14, with this row's θ, d, a, α "
+                               "put in (cos and sin of a constant angle are numbers).")])
 
     return Prediction(where, checker, lambda: f"{where} = {sp.sstr(truth)}.")
 
@@ -262,20 +276,20 @@ def point_prediction(question: str, expected, why: str, tol: float = 1e-3) -> Pr
     except Refused as error:
         raise DHLabError(str(error)) from None
     if not np.all(np.isfinite(expected)):
-        raise DHLabError(f"expected must be 3 finite numbers, got {describe(expected)}.")
+        raise DHLabError(_("expected must be 3 finite numbers, got {got}.").format(got=describe(expected)))
     why = as_text(why, "why")
     if not (isinstance(tol, (int, float)) and math.isfinite(tol) and tol > 0):
-        raise DHLabError(f"tol must be a positive number, got {describe(tol)}.")
+        raise DHLabError(_("tol must be a positive number, got {got}.").format(got=describe(tol)))
 
     def checker(answer):
-        name = "your point"
+        name = _("your point")
         try:
             mine = np.asarray(to_vector(answer, name, 3), dtype=float)
         except (Refused, TypeError, ValueError) as error:
             return _wrong(name, [str(error)])
         if np.allclose(mine, expected, atol=tol):
-            return Feedback("correct", f"correct: {name} is right.")
+            return Feedback("correct", _("correct: {name} is right.").format(name=name))
         off = [c for c, m, e in zip("xyz", mine, expected) if abs(m - e) > tol]
-        return _wrong(name, [f"your point {_vec(mine)} is off in {', '.join(off)}."])
+        return _wrong(name, [_("your point {mine} is off in {axes}.").format(mine=_vec(mine), axes=", ".join(off))])
 
     return Prediction(question, checker, lambda: f"{_vec(expected)}: {why}")

@@ -3,7 +3,8 @@
 ``configurarTH`` pushes two matrices per model into ``THList`` (the base's pair first), a key press
 rebuilds one joint's Tz factor and writes it into its slot, and ``renderizar`` multiplies the list in
 order. ``SeedProgram(printed=True)`` runs the key handler as the seed prints it, which stores ``THx``
-instead of ``THz`` (erratum 000-2).
+instead of ``THz`` (erratum 000-2). :func:`seed001_frames` builds the arm with seed 001's faulty
+``DefinirTHz`` instead (errata 001-1, 001-2).
 
 >>> program = SeedProgram()
 >>> program.press(97)                       # numpad 1: θ1 += 5°
@@ -17,16 +18,18 @@ from __future__ import annotations
 import numpy as np
 
 from ..transforms import Rx, Rz, trans
+from ..i18n import _
 from ..validation import DHLabError, as_number
+from .exercises import seed001_DefinirTHz           # seed 001's listing, transcribed in notebook 2
 
-__all__ = ["CONFIGURAR_TH", "KEYS", "OFFSETS", "SeedProgram"]
+__all__ = ["CONFIGURAR_TH", "KEYS", "OFFSETS", "SeedProgram", "seed001_frames"]
 
 # configurarTH, one line per link b1 … b6 and the gripper: (d, α in degrees, a)
 CONFIGURAR_TH = [(2.5, -90, 0), (6, -90, 0), (6, 0, 12), (1, 0, 12), (6, -90, 0), (6, -90, 0), (0, 0, 0)]
 # WindowProc: key code -> (joint, sense of the change); 97, 100, 103 are VK_NUMPAD1, 4, 7
 KEYS = {97: (1, +1), 100: (2, +1), 103: (3, +1), ord("R"): (4, +1), ord("F"): (5, +1), ord("V"): (6, +1),
         ord("G"): (7, -1)}
-OFFSETS = {k + 1: d for k, (d, _, _) in enumerate(CONFIGURAR_TH)}      # d_k of each joint's Tz factor
+OFFSETS = {k + 1: d for k, (d, _alpha, _a) in enumerate(CONFIGURAR_TH)}      # d_k of each joint's Tz factor
 
 
 class SeedProgram:
@@ -75,9 +78,31 @@ class SeedProgram:
         return TH
 
 
+def seed001_frames(theta_deg) -> np.ndarray:
+    """Every frame (8, 4, 4) of the SSRMS chain built with seed 001's ``DefinirTHz`` for each Tz factor
+    (the THx of seed 000 is right); ``theta_deg``: the 7 joint angles in degrees."""
+    theta_deg = np.asarray(theta_deg, dtype=float) if _is_numbers(theta_deg) else None
+    if theta_deg is None or theta_deg.shape != (len(CONFIGURAR_TH),):
+        raise DHLabError(_("theta_deg: expected {n} joint angles in degrees, e.g. [0] * 7.").format(
+            n=len(CONFIGURAR_TH)))
+    frames = [np.eye(4)]
+    for (d, alpha, a), t in zip(CONFIGURAR_TH, theta_deg):
+        A = seed001_DefinirTHz(np.radians(t), (0, 0, d)) @ trans(a, 0, 0) @ Rx(np.radians(alpha))
+        frames.append(frames[-1] @ A)
+    return np.array(frames)
+
+
+def _is_numbers(values) -> bool:
+    try:
+        return np.asarray(values, dtype=float).dtype.kind == "f"
+    except (TypeError, ValueError):
+        return False
+
+
 def _read_key(code, dtheta):
     """The joint and sense of key ``code``, and ``dtheta`` as a number; a clear error otherwise."""
     if isinstance(code, bool) or not isinstance(code, (int, np.integer)) or int(code) not in KEYS:
-        raise DHLabError(f"key code {code!r} is not one of the seed's keys {sorted(KEYS)}: 97, 100, 103 are "
-                         "numpad 1, 4, 7; the letters are ord('R'), ord('F'), ord('V'), ord('G').")
+        raise DHLabError(_("key code {code!r} is not one of the seed's keys {keys}: 97, 100, 103 are "
+                           "numpad 1, 4, 7; the letters are ord('R'), ord('F'), ord('V'), ord('G').").format(
+                               code=code, keys=sorted(KEYS)))
     return (*KEYS[int(code)], as_number(dtheta, "dtheta"))

@@ -20,6 +20,7 @@ import math
 import numpy as np
 import sympy as sp
 
+from ..i18n import _
 from . import check_options as teacher
 from .answers import Refused, close, is_unanswered, rounding_slack, to_vector, typed_decimals
 from .feedback import Feedback, correct, unanswered, wrong
@@ -54,7 +55,7 @@ def check_value(student, expected, *, name: str = "your value", components=None,
     scalar = np.ndim(np.array(expected, dtype=object)) == 0 and not isinstance(expected, sp.MatrixBase)
     n = len(exp_exprs)
     components = teacher.names(components, n, "components") if components is not None else (
-        [name] if scalar else [f"component {k + 1}" for k in range(n)])
+        [name] if scalar else [_("component {k}").format(k=k + 1) for k in range(n)])
     units = teacher.units(unit, n)
     if is_unanswered(student):
         return unanswered(name)
@@ -65,7 +66,7 @@ def check_value(student, expected, *, name: str = "your value", components=None,
     if any(e.free_symbols for e in exp_exprs) or isinstance(got, list):
         feedback = check_matrix(sp.Matrix([got if isinstance(got, list) else list(got)]),
                                 sp.Matrix([exp_exprs]), name=name, tol=tol, mistakes=[
-                                    (sp.Matrix([list(np.ravel(np.array(w, dtype=object)))]), m)
+                                    (sp.Matrix([list(np.ravel(np.array(w, dtype=object)))]), _(m))
                                     for w, m in mistakes], index_style="math")
         if feedback.status == "wrong":
             feedback.items = [_component_names(i, components) for i in feedback.items]
@@ -79,16 +80,16 @@ def check_value(student, expected, *, name: str = "your value", components=None,
         note = rounding_note(decimals)
         return correct(name, note) if decimals >= 2 else wrong(name, [note])
     for w, message in mistakes:
-        w = np.array([float(v) for v in teacher.expected_vector(w, "a known mistake")])
+        w = np.array([float(v) for v in teacher.expected_vector(w, _("a known mistake"))])
         if w.shape == got.shape and close(got, w, tol, slack):
-            return wrong(name, [message])
+            return wrong(name, [_(message)])
     return wrong(name, _vector_diagnosis(got, exp, components, units, tol, scalar, decimals))
 
 
 def _component_names(item: str, components) -> str:
     """check_matrix speaks of 'row 1, column k': for a vector, name the component."""
     for k, comp in enumerate(components):
-        prefix = f"row 1, column {k + 1}: "
+        prefix = _("row {i}, column {j}").format(i=1, j=k + 1) + ": "
         if item.startswith(prefix):
             return f"{comp}: " + item[len(prefix):]
     return item
@@ -99,11 +100,12 @@ def _vector_diagnosis(got, exp, components, units, tol, scalar, decimals=None) -
     slack = rounding_slack(decimals)
     if n > 1:
         if close(got, -exp, tol, slack) and not close(exp, np.zeros(n), 1e-12):
-            return ["every component has the wrong sign."]
+            return [_("every component has the wrong sign.")]
         if n <= 6:
             for perm in itertools.permutations(range(n)):
                 if list(perm) != list(range(n)) and close(got[list(perm)], exp, tol, slack):
-                    return [f"the right numbers, in the wrong order: the order is ({', '.join(components)})."]
+                    return [_("the right numbers, in the wrong order: the order is ({order}).").format(
+                        order=", ".join(components))]
     items = []
     for k in range(n):
         if close(got[k], exp[k], tol, slack):
@@ -116,22 +118,25 @@ def _vector_diagnosis(got, exp, components, units, tol, scalar, decimals=None) -
 def _number_problem(g, e, unit, tol, decimals=None) -> str:
     nonzero = not math.isclose(e, 0, abs_tol=1e-12)
     if unit == "rad" and nonzero and math.isclose(g, math.degrees(e), rel_tol=tol, abs_tol=tol):
-        return (f"you gave {num(g)}, which is the angle in degrees: the API takes radians. "
-                f"Write deg2rad({num(g)}) (or {num(g)}·π/180).")
+        return _("you gave {g}, which is the angle in degrees: the API takes radians. Write deg2rad({g}) "
+                 "(or {g}·π/180).").format(g=num(g))
     if unit == "°" and nonzero and math.isclose(g, math.radians(e), rel_tol=tol, abs_tol=tol):
-        return f"you gave {num(g)}, which is the angle in radians: here it is asked in degrees."
+        return _("you gave {g}, which is the angle in radians: here it is asked in degrees.").format(g=num(g))
     if unit in ("rad", "°"):
         turn = 2 * math.pi if unit == "rad" else 360.0
         turns = (g - e) / turn
         if abs(turns) < 1e6 and math.isclose(turns, round(turns), abs_tol=tol) and round(turns):
-            return f"you gave {_with_unit(g, unit)}: the same direction, but give it within one turn (±180°)."
+            return _("you gave {g}: the same direction, but give it within one turn (±180°).").format(
+                g=_with_unit(g, unit))
     if nonzero and math.isclose(g, -e, rel_tol=tol, abs_tol=tol + rounding_slack(decimals)):
-        return f"you gave {_with_unit(g, unit)}: the sign is wrong."
+        return _("you gave {g}: the sign is wrong.").format(g=_with_unit(g, unit))
     if decimals is not None and math.isclose(g, e, abs_tol=3 * rounding_slack(decimals)):
-        return (f"you gave {_with_unit(g, unit)}: close, but not right to the {decimals} decimal"
-                f"{'s' if decimals != 1 else ''} you typed; check the last digit (round to the nearest, "
-                "do not just cut the digits off).")
-    return f"you gave {_with_unit(g, unit)}, which is not right."
+        return (_("you gave {g}: close, but not right to the {decimals} decimal you typed; check the last digit "
+                  "(round to the nearest, do not just cut the digits off).") if decimals == 1 else
+                _("you gave {g}: close, but not right to the {decimals} decimals you typed; check the last digit "
+                  "(round to the nearest, do not just cut the digits off).")).format(
+                      g=_with_unit(g, unit), decimals=decimals)
+    return _("you gave {g}, which is not right.").format(g=_with_unit(g, unit))
 
 
 def check_solutions(student, expected, *, name: str = "your solutions", components=None, unit="",
@@ -152,25 +157,30 @@ def check_solutions(student, expected, *, name: str = "your solutions", componen
     expected = teacher.expected_solutions(expected)
     n = len(expected[0]) if expected else 0
     components = teacher.names(components, n, "components") if components is not None else \
-        [f"component {k + 1}" for k in range(n)]
+        [_("component {k}").format(k=k + 1) for k in range(n)]
     units = teacher.units(unit, n)
     if is_unanswered(student):
         return unanswered(name)
     if not expected:             # the point is out of reach: the right answer is the empty list
         return correct(name) if isinstance(student, (list, tuple)) and not student else wrong(
-            name, [f"there is no solution (the target is out of reach): {name} must be the empty list []."])
+            name, [_("there is no solution (the target is out of reach): {name} must be the empty list [].").format(
+                name=name)])
     if isinstance(student, (str, dict, set)) or not hasattr(student, "__iter__") or (
             isinstance(student, np.ndarray) and student.ndim == 0):
-        return wrong(name, [f"{name} must be a list of solutions, each ({', '.join(components)})."])
+        return wrong(name, [_("{name} must be a list of solutions, each ({components}).").format(
+            name=name, components=", ".join(components))])
     student = list(student)
     if len(student) == n and not any(hasattr(s, "__iter__") and not isinstance(s, str) for s in student):
-        return wrong(name, [f"{name} must be a list of solutions, [[{', '.join(components)}], …]: you gave "
-                            "one list of numbers; put each solution in its own brackets."])
+        return wrong(name, [_("{name} must be a list of solutions, [[{components}], …]: you gave one list of "
+                              "numbers; put each solution in its own brackets.").format(
+                                  name=name, components=", ".join(components))])
     try:
-        sols = [np.asarray(to_vector(s, f"solution {k + 1}", n), dtype=float) for k, s in enumerate(student)]
+        sols = [np.asarray(to_vector(s, _("solution {k}").format(k=k + 1), n), dtype=float)
+                for k, s in enumerate(student)]
     except (Refused, TypeError, ValueError) as refusal:
         return wrong(name, [str(refusal) if isinstance(refusal, Refused) else
-                            f"{name}: each solution must be numbers ({', '.join(components)}), not symbols."])
+                            _("{name}: each solution must be numbers ({components}), not symbols.").format(
+                                name=name, components=", ".join(components))])
     decimals = typed_decimals(student)
     slack = rounding_slack(decimals)
     period = np.array([2 * math.pi if u == "rad" else 360.0 if u == "°" else 0.0 for u in units])
@@ -195,19 +205,19 @@ def check_solutions(student, expected, *, name: str = "your solutions", componen
         return correct(name, note) if decimals >= 2 else wrong(name, [note])
     items = []
     if len(sols) != len(expected):
-        items.append(f"there {'is' if len(expected) == 1 else 'are'} {len(expected)} solution"
-                     f"{'' if len(expected) == 1 else 's'}; you gave {len(sols)}.")
+        items.append((_("there is {n} solution; you gave {k}.") if len(expected) == 1 else
+                      _("there are {n} solutions; you gave {k}.")).format(n=len(expected), k=len(sols)))
     for s in extra:
         message = next((m for w, m in mistakes
-                        if same(s, np.array([float(v) for v in teacher.expected_vector(w, "a known mistake")]))),
+                        if same(s, np.array([float(v) for v in teacher.expected_vector(w, _("a known mistake"))]))),
                        None)
         if message:
-            items.append(message)
+            items.append(_(message))
             continue
         if any(same(s, e) for e in expected):
-            items.append(f"{_solution_text(s, components, units)} is given twice.")
+            items.append(_("{solution} is given twice.").format(solution=_solution_text(s, components, units)))
             continue
-        text = f"{_solution_text(s, components, units)} is not a solution"
+        text = _("{solution} is not a solution").format(solution=_solution_text(s, components, units))
         if unmatched:
             closest = min(unmatched, key=lambda k: np.abs(s - expected[k]).sum())
             details = _vector_diagnosis(s, expected[closest], components, units, tol, False, decimals)
@@ -216,8 +226,9 @@ def check_solutions(student, expected, *, name: str = "your solutions", componen
         items.append(text + ".")
     if len(sols) < len(expected):
         k = len(expected) - len(sols)
-        items.append(f"missing: {k} more solution{'s' if k > 1 else ''}: every branch of the inverse "
-                     "kinematics gives one.")
+        message = (_("missing: {k} more solutions: every branch of the inverse kinematics gives one.") if k > 1
+                   else _("missing: {k} more solution: every branch of the inverse kinematics gives one."))
+        items.append(message.format(k=k))
     return wrong(name, items)
 
 

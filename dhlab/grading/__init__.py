@@ -3,12 +3,14 @@
 * :mod:`dhlab.grading.puma` / :mod:`dhlab.grading.frames` — the reference robot and the valid DH frames;
 * :mod:`dhlab.grading.answers` — what a submission's answers are, as plain data;
 * :mod:`dhlab.grading.checks` — the fair checks and their feedback;
-* :mod:`dhlab.grading.part3` — each transformation judged against the frame the student meant
+* :mod:`dhlab.grading.part2` — each link in the frame the student's own transformations give it;
+  :mod:`dhlab.grading.part3` — each transformation judged against the frame the student meant
   (one slip, one item); :mod:`dhlab.grading.chain_motion` — the whole chain, moving;
 * :mod:`dhlab.grading.staging` — every submission copied, code only, before any runs;
 * :mod:`dhlab.grading.runner` / :mod:`dhlab.grading.sandbox` — running one notebook
   in a fresh kernel with time, memory, output and process limits, as an unprivileged
-  user in its own mount namespace when the grader is root;
+  user in its own mount namespace when the grader is root (:mod:`dhlab.grading.notebook_code`
+  reads the notebook's code first, with limits, and lists what it does to dhlab);
 * :mod:`dhlab.grading.isolation` — the kernels' users, ending every process a submission
   started, and the check that the installed dhlab is unchanged;
 * :mod:`dhlab.grading.gradebook` — the CSV (rewritten after every submission) and feedback files;
@@ -25,5 +27,7 @@
   :mod:`dhlab.grading.lms` (CSV files Canvas and Moodle import).
 
 The command line is :mod:`dhlab.grading.cli` (``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv
-[--secret-file KEY --release DIR]``); :mod:`dhlab.grading.launch` starts its runner processes.
+[--secret-file KEY --release DIR]``); :mod:`dhlab.grading.launch` starts its runner processes,
+:mod:`dhlab.grading.rows` makes one submission's gradebook row and :mod:`dhlab.grading.progress`
+shows the run's progress and summary.
 """

@@ -5,10 +5,10 @@ The checks compare what every valid answer shares (see :mod:`dhlab.grading.puma`
 
 * part 1 (the sketch): counts, joint types, and how each pair of consecutive joint
   axes meets — facts of the robot, computed from the reference's axes;
-* part 2 (each link in its own frame): the link's points must land on the robot's
-  points when placed by *a valid DH frame of that link* (the DH rules alone: part 2
-  never changes with part 3; a note says when the links are not drawn in the frames
-  the student's own transformations build);
+* part 2 (each link in its own frame, :mod:`dhlab.grading.part2`): the link's points
+  must land on the robot's points when placed by a valid DH frame of that link, the one
+  the student's own transformations build (a row part 3 already charges is not charged
+  again here);
 * part 3 (the transformations, :mod:`dhlab.grading.part3`): each ``T_i`` is judged
   against the frame the student evidently intended, so one slip costs one item and
   the feedback names the parameter at fault. Every valid choice (signs of the axes,
@@ -30,13 +30,13 @@ Part 1 (the sketch): 0/2 points, not answered
 from __future__ import annotations
 
 import html
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from . import puma
 from .answers import NOT_ANSWERED, Answers, Row, Unreadable
+from .part2 import link_items
 from .part3 import Analysis, Item, analyse, chain_matches, matrix, random_configurations, rows_of
 
 __all__ = ["POINTS", "Item", "PartResult", "Report", "check_part1", "check_part2", "check_part3",
@@ -207,7 +207,8 @@ _rows, _matrix = rows_of, matrix
 
 
 def _analyse(answers: Answers, ref=None) -> Analysis:
-    return analyse(answers, ref)
+    """Part 3's reading of the rows, as check_all makes it (the one the links of part 2 agree with)."""
+    return reading(answers, analyse(answers, ref))
 
 
 def _chain_item(answers: Answers, rows, n: int) -> Item:
@@ -233,7 +234,7 @@ def _chain_item(answers: Answers, rows, n: int) -> Item:
 
 def check_part3(answers: Answers, _analysis: Analysis | None = None, ref=None) -> PartResult:
     """Each T_i against the frame the student meant (:mod:`dhlab.grading.part3`), and the chain."""
-    analysis = _analysis or analyse(answers, ref)
+    analysis = _analysis or _analyse(answers, ref)
     ref = analysis.ref
     items = analysis.items + [_chain_item(answers, analysis.rows, ref.n)]
     part = PartResult("part3", items)
@@ -248,132 +249,29 @@ def check_part3(answers: Answers, _analysis: Analysis | None = None, ref=None) -
     return part
 
 
-# --- part 2: each link in its own frame ----------------------------------------------------
+# --- part 2: each link in its own frame (the checks are in part2.py) ----------------------------
+
+def reading(answers: Answers, analysis: Analysis) -> Analysis:
+    """Of the readings of part 3 that charge as many rows (the best and its alternatives), the one
+    in whose frames the most links of part 2 are drawn: a slip in T5 that part 3 may equally read
+    as a flip of frame 4 is read as the links say (one slip, one item, in both parts)."""
+    best, most = analysis, None
+    for candidate in [analysis] + analysis.alternatives:
+        good = sum(1 for item in link_items(answers, candidate, candidate.ref)[0] if item.ok)
+        if most is None or good > most:
+            best, most = candidate, good
+        if most == candidate.ref.n + 1:
+            break
+    return best
+
 
 def check_part2(answers: Answers, _analysis: Analysis | None = None, ref=None) -> PartResult:
-    """Each link's points, in a valid DH frame of that link (the DH rules alone, so a
-    mistake in part 3 never changes part 2's score, and part 2 is scored the same
-    whichever valid frames part 3 uses). When the links are valid but are not drawn in
-    the frames the student's own T_1…T_k build, a note (not scored) says which."""
-    ref = ref or (_analysis.ref if _analysis else None) or puma.reference()
-    value = answers.link_points
-    items, fitted = [], []
-    for k in range(ref.n + 1):
-        label = f"link {k} ({ref.link_names[k]})"
-        if value is NOT_ANSWERED:
-            items.append(Item(label, None, "not answered"))
-            continue
-        if isinstance(value, Unreadable):
-            items.append(Item(label, False, value.why))
-            continue
-        points = value[k] if k < len(value) else NOT_ANSWERED
-        if points is NOT_ANSWERED:
-            items.append(Item(label, None, "not answered"))
-        elif isinstance(points, Unreadable):
-            items.append(Item(label, False, points.why))
-        else:
-            items.append(_check_link(ref, k, label, np.array(points, float)))
-            if items[-1].ok:
-                fitted.append((k, np.array(points, float)))
-    part = PartResult("part2", items)
-    if isinstance(value, list) and len(value) > ref.n + 1:
-        part.notes.append(f"(link_points has {len(value)} links; the robot has {ref.n + 1}: links 0…{ref.n})")
-    if _analysis is not None and _analysis.structural_ok and all(item.ok for item in _analysis.items):
-        apart = []
-        for k, P in fitted:
-            F = _analysis.frames[k]
-            if np.linalg.norm(P @ F[:3, :3].T + F[:3, 3] - ref.world_points(k), axis=1).max() > puma.TOL_POS:
-                apart.append(k)
-        if apart:
-            which = ", ".join(str(k) for k in apart)
-            part.notes.append(f"(not scored) link{'s' if len(apart) > 1 else ''} {which}: drawn in a valid DH frame, "
-                              f"but not in the one your T1…T{ref.n} build, so your assembled robot (the figure "
-                              f"below) will not draw the {ref.name}; use the same frames in parts 2 and 3")
-    return part
-
-
-def _check_link(ref, k: int, label: str, P) -> Item:
-    names = [name for name, _ in ref.points[k]]
-    W = ref.world_points(k)
-    if len(P) != len(W):
-        return Item(label, False, f"give the {len(W)} points {', '.join(names)} in this order; you gave {len(P)}")
-    shape = _shape_problem(names, P, W)
-    if shape:
-        return Item(label, False, shape)
-    _, err = puma.fit_link(ref, k, P)
-    if err <= puma.TOL_POS:
-        return Item(label, True, f"in a valid DH frame {k}" if k else "in frame 0")
-    return Item(label, False, _frame_problem(ref, k, names, P, W))
-
-
-def _shape_problem(names, P, W) -> str:
-    """A message if the points cannot be the link at all (distances between them differ)."""
-    worst, pair = 0.0, None
-    for a in range(len(P)):
-        for b in range(a + 1, len(P)):
-            diff = abs(np.linalg.norm(P[a] - P[b]) - np.linalg.norm(W[a] - W[b]))
-            if diff > worst:
-                worst, pair = diff, (a, b)
-    if worst <= puma.TOL_POS:
-        return ""
-    a, b = pair
-    return (f"these points are not the link's shape: {names[a]}–{names[b]} is "
-            f"{np.linalg.norm(P[a] - P[b]):.4f} m apart in your answer and {np.linalg.norm(W[a] - W[b]):.4f} m "
-            f"on the robot (a coordinate mixed up, or points out of order?)")
-
-
-def _frame_problem(ref, k: int, names, P, W) -> str:
-    """The link has the right shape but no valid DH frame k puts it there: say why."""
-    n = ref.n
-    if k == 0:
-        return "link 0 is given in frame 0, the world frame drawn in the figure: its points are the table's"
-    G = _rigid_fit(P, W)
-    if G is not None and np.linalg.norm(P @ G[:3, :3].T + G[:3, 3] - W, axis=1).max() > puma.TOL_POS:
-        return ("your coordinates are a mirror image of the link: is your frame right-handed "
-                f"(dextrógiro, y{k} = z{k} × x{k})?")
-    if G is not None:
-        R, o = G[:3, :3], G[:3, 3]
-        axis = ref.axes[k] if k < n else ref.axes[n - 1]
-        local = R.T @ axis.direction
-        which = int(np.argmax(np.abs(local)))
-        joint = k + 1 if k < n else n
-        if abs(local[2]) < math.cos(math.radians(puma.TOL_DEG)):
-            where = f"along your local {'xyz'[which]} axis" if abs(local[which]) > 0.999 else "tilted from your z axis"
-            return (f"in its own DH frame the axis of joint {joint} must be the z axis (z{k}: "
-                    f"seed 000, figures 11–12); in your model it lies {where}")
-        if k == n:
-            miss = float(np.linalg.norm(o - ref.end_point))
-            return (f"frame {n}'s origin (the end effector's) is {ref.end_text}; in your model the "
-                    f"origin is {miss:.4f} m from it")
-        off = axis.distance_to_point(o)
-        if ref.kinds[k] == "R" and off > puma.TOL_POS:
-            return (f"z{k} runs along the axis of joint {k + 1}, but your frame's origin is {off:.4f} m off "
-                    f"that axis; the origin of frame {k} lies on it")
-        rel = puma.relation(ref.axes[k - 1], ref.axes[k])
-        if "P" in ref.kinds[k - 1:k + 1]:
-            return (f"your x{k} must be square to the axes of joints {k} and {k + 1} and cross the line you "
-                    f"chose for z{k - 1} (a sliding joint's axis may be drawn on any line parallel to it, but "
-                    f"x{k} then follows it); in your model it does not")
-        return (f"your x{k} must lie along the common normal of the axes of joints {k} and {k + 1} "
-                f"({rel.kind}: x{k} ⟂ both, crossing the axis of joint {k}); in your model it does not")
-    C, _ = puma.fit_link(ref, k, P)
-    expected = (W - C[:3, 3]) @ C[:3, :3]
-    j = int(np.argmax(np.linalg.norm(expected - P, axis=1)))
-    return (f"no valid DH frame {k} gives these coordinates; in the valid frame {k} nearest to your answer, "
-            f"point {names[j]} would be at {_vec(expected[j])}, yours is {_vec(P[j])}")
-
-
-def _rigid_fit(P, W):
-    """The rigid motion G with G·P ≈ W (Kabsch), or None when P is (nearly) collinear."""
-    Pc, Wc = P - P.mean(axis=0), W - W.mean(axis=0)
-    if np.linalg.svd(Pc, compute_uv=False)[1] < 1e-6:
-        return None
-    U, _, Vt = np.linalg.svd(Pc.T @ Wc)
-    D = np.diag([1, 1, np.sign(np.linalg.det(Vt.T @ U.T))])
-    R = Vt.T @ D @ U.T
-    G = np.eye(4)
-    G[:3, :3], G[:3, 3] = R, W.mean(axis=0) - R @ P.mean(axis=0)
-    return G
+    """Each link's points, in the frame the student's own T_1…T_k give that link
+    (:mod:`dhlab.grading.part2`): one item per link; a slip already charged in part 3
+    is not charged again here."""
+    analysis = _analysis or _analyse(answers, ref)
+    items, notes = link_items(answers, analysis, analysis.ref)
+    return PartResult("part2", items, notes)
 
 
 # --- all parts ---------------------------------------------------------------------------
@@ -381,7 +279,7 @@ def _rigid_fit(P, W):
 def check_all(answers: Answers, ref=None) -> Report:
     """Every scored part (1–3; part 4, the teach panel, is not scored), against the
     reference robot ``ref`` (default: the PUMA 560)."""
-    analysis = analyse(answers, ref)
+    analysis = reading(answers, analyse(answers, ref))
     ref = analysis.ref
     parts = [check_part1(answers, ref), check_part2(answers, analysis, ref), check_part3(answers, analysis)]
     return Report(parts, ref.name, ref.n)

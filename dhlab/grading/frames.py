@@ -212,14 +212,16 @@ def is_valid_frame(ref: Reference, k: int, F) -> bool:
     return angle <= TOL_DEG and dist <= TOL_POS
 
 
-def fit_link(ref: Reference, k: int, local_points) -> tuple:
-    """The valid DH frame k in which ``local_points`` land best on link k's points.
+def fit_link(ref: Reference, k: int, local_points, world=None) -> tuple:
+    """The valid DH frame k in which ``local_points`` land best on link k's points
+    (or on the points ``world``: part 2 also asks which valid frame j carries a later
+    link's points, given in frame j, onto that link).
 
     Returns (frame, worst point distance in metres).
     """
     family = frame_family(ref, k)
     P = np.asarray(local_points, float)
-    W = ref.world_points(k)
+    W = ref.world_points(k) if world is None else np.asarray(world, float)
     if family.loose:
         return min((_fit_loose(family, base, P, W) for base in family.bases), key=lambda fit: fit[1])
     best = None

@@ -29,6 +29,13 @@ secret is read into memory and deleted from the container before any student cod
 grader error (or a submitter not in the roster) writes **no** results file: an autograder
 failure the teacher can run again, with the reason in the log.
 
+**Never as root.** Gradescope runs the autograder as root. The student's kernel runs as an
+unprivileged user (a ``dhlab-grade-N`` user, ``nobody``, or the bare uid 65534: root can always
+become it, with or without namespaces); when none can be used, the submission is refused
+(:data:`ROOT_KERNEL`, no results file) rather than graded by a kernel that could forge its result.
+And before results.json is written, every process still below the grader is killed
+(:mod:`dhlab.grading.reaper`): a daemon a notebook forked cannot rewrite it afterwards.
+
 ``DHLAB_AUTOGRADER_ROOT`` moves ``/autograder`` (the local harness,
 :mod:`dhlab.grading.gradescope_local`, builds the tree in a temporary folder).
 """
@@ -45,7 +52,7 @@ import zipfile
 from pathlib import Path
 from types import SimpleNamespace
 
-__all__ = ["export", "run", "results", "main", "ROOT_ENV", "CONFIG", "VISIBILITIES", "AutograderError"]
+__all__ = ["export", "run", "results", "main", "ROOT_ENV", "CONFIG", "VISIBILITIES", "AutograderError", "ROOT_KERNEL"]
 
 ROOT_ENV = "DHLAB_AUTOGRADER_ROOT"
 CONFIG = "dhlab_autograder.json"
@@ -77,6 +84,11 @@ PYTHON="${DHLAB_AUTOGRADER_PYTHON:-python3}"
 cd "$ROOT"
 exec "$PYTHON" -m dhlab.grading.gradescope run --root "$ROOT"
 """
+
+
+ROOT_KERNEL = ("refused to run the student's notebook as root ({why}): as root a notebook could leave a process "
+               "that rewrites results.json or the grader, so no score is given. Let the container create users "
+               "(useradd) or keep its 'nobody' user, and do not export with --isolation none; then rerun.")
 
 
 class AutograderError(Exception):
@@ -169,7 +181,7 @@ def _student(metadata: dict, vs) -> str:
 def _grade(root: Path, config: dict) -> dict:
     """The results of the submission under ``root`` (raises :class:`AutograderError`)."""
     from . import checks, grade_variants as GV, selfcheck
-    from .cli import grade_submission
+    from .rows import grade_submission
     from .isolation import setup
     from .staging import stage
     source, submission = root / "source", root / "submission"
@@ -202,6 +214,8 @@ def _grade(root: Path, config: dict) -> dict:
         except OSError as e:
             raise AutograderError(f"cannot isolate the submission: {e}") from None
         print(f"dhlab autograder: {iso.note() or 'the kernel runs as ' + iso.users[0][0]}", flush=True)
+        if os.geteuid() == 0 and iso.mode != "user":
+            raise AutograderError(ROOT_KERNEL.format(why=iso.why))
         hide = [p.resolve() for p in (source, submission) if p.is_dir()]
         try:
             selfcheck.check(iso, options, hide)
@@ -219,7 +233,7 @@ def _grade(root: Path, config: dict) -> dict:
 
 
 def results(row: dict) -> dict:
-    """Gradescope's results.json for one gradebook row of :func:`dhlab.grading.cli.grade_submission`:
+    """Gradescope's results.json for one gradebook row of :func:`dhlab.grading.rows.grade_submission`:
     one test per part (its feedback as output), the rest of the feedback as the top-level output."""
     from .checks import POINTS, TITLES
     from .gradebook import PART_COLUMNS
@@ -243,15 +257,22 @@ def results(row: dict) -> dict:
 def run(root=None) -> int:
     """``run_autograder``: grade the submission under ``root`` (default ``$DHLAB_AUTOGRADER_ROOT`` or
     ``/autograder``) and write its results.json; 1 (and no results file) on an autograder failure."""
+    from .reaper import become_subreaper, end_descendants
     root = Path(root or os.environ.get(ROOT_ENV) or "/autograder")
     started = time.monotonic()
+    become_subreaper()                      # a daemon the notebook starts stays our descendant
     try:
         config = json.loads((root / "source" / CONFIG).read_text(encoding="utf-8"))
         outcome = _grade(root, config)
+        left = end_descendants()            # before results.json: nothing of the student's is left to rewrite it
+        if left:
+            print(f"dhlab autograder: ended {len(left)} process(es) the submission left running", flush=True)
     except AutograderError as e:
+        _quietly(end_descendants)
         print(f"dhlab autograder: not graded (not the student's fault; rerun it once fixed): {e}", flush=True)
         return 1
     except Exception as e:                                 # our failure, never the student's zero
+        _quietly(end_descendants)
         import traceback
         traceback.print_exc(file=sys.stdout)
         print(f"dhlab autograder: not graded (grader error {type(e).__name__}: {e}); rerun it once fixed.", flush=True)
@@ -264,6 +285,14 @@ def run(root=None) -> int:
     os.replace(tmp, out)
     print(f"dhlab autograder: {outcome['score']:g} points; results in {out}", flush=True)
     return 0
+
+
+def _quietly(step) -> None:
+    """Run a clean-up step on the way out of a failure (no results file is written anyway)."""
+    try:
+        step()
+    except Exception as e:
+        print(f"dhlab autograder: clean-up failed too ({e})", flush=True)
 
 
 def main(argv=None) -> int:

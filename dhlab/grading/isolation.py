@@ -52,6 +52,7 @@ USER_PREFIX = "dhlab-grade-"
 MAX_USERS = 64                                  # dhlab-grade-1 … -64: room for many graders at once
 SANDBOX = Path(__file__).resolve().with_name("sandbox.py")
 KERNELS_DIR_ENV = "DHLAB_GRADE_KERNELS_DIR"     # where the kernels' own folders go (see kernels_parent)
+NOBODY_UID = 65534                              # root can become this uid even with no passwd entry for it
 
 
 def package_dir() -> Path:
@@ -228,7 +229,7 @@ def kernels_parent() -> Path:
     chosen = os.environ.get(KERNELS_DIR_ENV)
     if chosen:
         return Path(chosen)
-    nobody = pwd.getpwnam("nobody").pw_uid if _has_user("nobody") else 65534
+    nobody = pwd.getpwnam("nobody").pw_uid if _has_user("nobody") else NOBODY_UID
     for folder in (tempfile.gettempdir(), "/tmp", "/var/tmp", "/dev/shm"):
         if os.path.isdir(folder) and not blocked_on_the_way(folder, nobody):
             return Path(folder)
@@ -271,7 +272,15 @@ def setup(jobs: int, mode: str = "auto") -> Isolation:
                 iso.users = [("nobody", nobody.pw_uid, nobody.pw_gid)]
                 iso.jobs = 1
                 iso.why = f"no user could be created ({e}), so all kernels run as nobody, one at a time"
-            except (KeyError, OSError):
+            except KeyError:                   # no nobody either: root can still become a bare uid
+                try:
+                    iso.locks.append(claim(f"uid-{NOBODY_UID}", wait=True))
+                    iso.users = [(f"uid-{NOBODY_UID}", NOBODY_UID, NOBODY_UID)]
+                    iso.jobs = 1
+                    iso.why = f"no user could be created ({e}), so all kernels run as uid {NOBODY_UID}, one at a time"
+                except OSError:
+                    iso.why = f"no unprivileged user could be created ({e})"
+            except OSError:
                 iso.why = f"no unprivileged user could be created ({e})"
         for user in iso.users:                 # a clean slate: nothing left from an earlier, killed batch of ours
             kill_user(user[1])
@@ -303,7 +312,7 @@ def kill_user(uid: int, tries: int = 50) -> bool:
         if pid == 0:                                   # the child: become the user, kill them all
             try:
                 os.setgroups([])
-                os.setgid(pwd.getpwuid(uid).pw_gid)
+                os.setgid(_gid_of(uid))
                 os.setuid(uid)
                 os.kill(-1, signal.SIGKILL)
             finally:
@@ -311,6 +320,14 @@ def kill_user(uid: int, tries: int = 50) -> bool:
         os.waitpid(pid, 0)
         time.sleep(0.02)
     return not _pids_of(uid)
+
+
+def _gid_of(uid: int) -> int:
+    """The group of ``uid``: its passwd entry's, or the same number for a bare uid (no entry)."""
+    try:
+        return pwd.getpwuid(uid).pw_gid
+    except KeyError:
+        return uid
 
 
 def _pids_of(uid: int) -> list:

@@ -23,7 +23,9 @@ teacher reads a page of working:
   pins them (:func:`_slides`), so a wrong offset in the charged row is not charged again
   to the row where the run ends.
 
-Among all such readings, the one that charges the fewest rows wins; among those, the
+Among all such readings, the one that charges the fewest rows wins (the others that charge
+as many are kept, ``Analysis.alternatives``: the links of part 2, drawn in the frames the
+student meant, may say which one it is, :func:`dhlab.grading.checks.reading`); among those, the
 one whose charges change the fewest parameters (a wrong sign of α is one parameter; a
 forgotten 180° in θ with the α and a that go with it, two or three; a row wrong in
 itself counts as more than any flip), then the one whose charged rows come first. A
@@ -41,14 +43,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import puma
+from . import offsets, puma
 from .answers import NOT_ANSWERED, Answers, Row
 from .chain_motion import chain_matches, random_configurations  # noqa: F401  (part of this module's API)
 
-__all__ = ["Analysis", "analyse", "rows_of", "matrix", "diagnose", "chain_matches", "random_configurations",
+__all__ = ["Analysis", "analyse", "rows_of", "matrix", "fits", "slips_of", "diagnose", "chain_matches", "random_configurations",
            "FLIPS"]
 
 MAX_STATES = 24
+MAX_READINGS = 8          # readings as cheap as the best, kept for part 2 (the links may tell which one is meant)
 FAIL_EDITS = 3            # a row wrong in itself counts as a bigger edit than any flip of its frame
 
 # the three ways a right-handed frame can be turned over and stay on the same axes
@@ -75,6 +78,7 @@ class Analysis:
     valid: list                 # whether the student's own T_k built that frame (True) or it was inferred
     structural_ok: bool         # every T_i is a Row with its own joint's variable in θ (d for a sliding joint)
     ref: object = None
+    alternatives: list = dataclasses.field(default_factory=list)   # other readings that charge as many rows
 
 
 def rows_of(answers: Answers, n: int | None = None) -> list:
@@ -121,8 +125,9 @@ def _structure(ref, i: int, row: Row) -> list:
     return []
 
 
-def _place(ref, i: int, V, row: Row, A) -> tuple:
-    """T_i placed on frame V: (passes, frame i, the problems found)."""
+def _place(ref, i: int, V, row: Row, A, rows=None) -> tuple:
+    """T_i placed on frame V: (passes, frame i, the problems found); ``rows`` (all the student's)
+    let the message name the offset the student changed along a run of parallel axes."""
     F = V @ A
     problems = []
     along = float(V[:3, 2] @ ref.axes[i - 1].direction) > 0
@@ -130,8 +135,13 @@ def _place(ref, i: int, V, row: Row, A) -> tuple:
         problems.append(_sense_message(i, row, along))
     _, angle, dist = puma.nearest_valid_frame(ref, i, F)
     if not (angle <= puma.TOL_DEG and dist <= puma.TOL_POS):
-        problems.append(diagnose(ref, i, V, F, row))
+        problems.append(diagnose(ref, i, V, F, row, rows))
     return not problems, F, problems
+
+
+def fits(ref, i: int, V, row: Row) -> bool:
+    """Whether T_i, placed on frame V, gives a valid frame i that turns joint i the pictured way."""
+    return _place(ref, i, V, row, matrix(row))[0]
 
 
 # --- the search ------------------------------------------------------------------------------
@@ -217,8 +227,10 @@ def analyse(answers: Answers, ref=None) -> Analysis:
         structural_ok = structural_ok and not _structure(ref, i, row)
         A = matrix(row)
         states = _dedupe([new for s in states for new in _expand(ref, i, rows, A, s)])
-    best = min(states, key=_State.rank)
-    return Analysis(rows, best.items, best.frames, best.own, structural_ok, ref)
+    best, *others = sorted(states, key=_State.rank)
+    alternatives = [Analysis(rows, s.items, s.frames, s.own, structural_ok, ref)
+                    for s in others if s.cost == best.cost][:MAX_READINGS]
+    return Analysis(rows, best.items, best.frames, best.own, structural_ok, ref, alternatives)
 
 
 def _expand(ref, i: int, rows, A, s: _State) -> list:
@@ -266,7 +278,7 @@ def _expand(ref, i: int, rows, A, s: _State) -> list:
     if passed_free:                     # a row that fits is never charged for itself
         return out
     # T_i wrong: diagnosed on the frame as it is; carry on from the nearest valid frame i
-    _, F, problems = _place(ref, i, s.V, row, A)
+    _, F, problems = _place(ref, i, s.V, row, A, rows)
     if broken:                    # the variable is misplaced: its sense means nothing yet
         problems = broken + [p for p in problems if not p.startswith(f"joint {i}: a positive")]
     C, _, _ = puma.nearest_valid_frame(ref, i, F)
@@ -291,9 +303,8 @@ def _slides(ref, i: int, s: _State, A) -> list:
     return out
 
 
-def _one_edit_fits(ref, i: int, V, row: Row) -> bool:
-    """Whether changing one parameter of T_i the way students slip (a sign, 180°) makes it fit
-    frame V: then "T_i is wrong" is as small an explanation as a flip of the frame before."""
+def slips_of(row: Row) -> list:
+    """T_i with one parameter changed the way students slip (a sign, 180°): the rows it may have meant."""
     theta, d = row.theta, row.d
     edits = [dataclasses.replace(row, theta=dataclasses.replace(theta, const=theta.const + 180)),
              dataclasses.replace(row, theta=dataclasses.replace(theta, sign=-theta.sign, const=-theta.const)),
@@ -302,7 +313,13 @@ def _one_edit_fits(ref, i: int, V, row: Row) -> bool:
              dataclasses.replace(row, a=-row.a), dataclasses.replace(row, d=dataclasses.replace(d, const=-d.const))]
     if d.joint is not None:                         # a sliding joint: the sign of its variable
         edits.append(dataclasses.replace(row, d=dataclasses.replace(d, sign=-d.sign)))
-    return any(_place(ref, i, V, new, matrix(new))[0] for new in edits)
+    return edits
+
+
+def _one_edit_fits(ref, i: int, V, row: Row) -> bool:
+    """Whether changing one parameter of T_i the way students slip makes it fit frame V: then
+    "T_i is wrong" is as small an explanation as a flip of the frame before."""
+    return any(_place(ref, i, V, new, matrix(new))[0] for new in slips_of(row))
 
 
 def _dedupe(states) -> list:
@@ -353,7 +370,7 @@ def _vec(v, digits: int = 4) -> str:
     return "(" + ", ".join(f"{round(x, digits) + 0.0:.{digits}f}" for x in np.asarray(v, float).tolist()) + ")"
 
 
-def diagnose(ref, i: int, V, F, row: Row) -> str:
+def diagnose(ref, i: int, V, F, row: Row, rows=None) -> str:
     """Why frame i = (frame i-1)·T_i is not a valid DH frame: the DH quantity at fault."""
     n = ref.n
     z_prev, z = V[:3, 2], F[:3, 2]
@@ -367,8 +384,12 @@ def diagnose(ref, i: int, V, F, row: Row) -> str:
             return (f"z{n} should lie along z{n - 1} (the axis of joint {n}: the last frame's z is aligned "
                     f"with the previous one, seed 000 paso 0); your α{n} = {_g(row.alpha)}° turns it{alpha_hint}")
         miss = float(np.linalg.norm(o - ref.end_point))
+        along = float((ref.end_point - o) @ z_prev)
+        check = f"check d{n} = {row.d.text()} and a{n} = {_g(row.a)}"
+        if miss - abs(along) <= puma.TOL_POS and len(offsets.parallel_run(ref, n)) > 1:     # off along z_{n-1} only
+            check = offsets.advice(ref, n, row, rows, along)
         return (f"end effector: frame {n}'s origin should be at {ref.end_text}, {_vec(ref.end_point)} m; "
-                f"yours is {miss:.4f} m away, at {_vec(o)}: check d{n} = {row.d.text()} and a{n} = {_g(row.a)}")
+                f"yours is {miss:.4f} m away, at {_vec(o)}: {check}")
     L_prev, L_next = ref.axes[i - 1], ref.axes[i]
     rel = puma.relation(L_prev, L_next)
     ang_st = math.degrees(math.acos(min(1.0, abs(float(z_prev @ z)))))
@@ -404,13 +425,9 @@ def diagnose(ref, i: int, V, F, row: Row) -> str:
     if abs(shift) <= puma.TOL_POS:                # no distance to quote: the frame is off in another way
         return (f"frame {i} is not a valid DH frame for {joint}: check the constant in θ{i} "
                 f"(yours: {_g(row.theta.const)}°) and α{i} (yours: {_g(row.alpha)}°)")
-    free = ""
-    if puma.frame_family(ref, i - 1).shift:
-        free = (f" — or d{i - 1}: the origin of frame {i - 1} may slide along z{i - 1} (its axes are parallel), "
-                f"but then d{i} must follow it")
     return (f"{joint}: x{i} must cross z{i - 1} where the common normal of z{i - 1} and z{i} does; yours "
             f"crosses it {abs(shift):.4g} m {'short of' if shift > 0 else 'past'} that point (along z{i - 1}): "
-            f"check d{i} (yours: {row.d.text()}){free}")
+            f"{offsets.advice(ref, i, row, rows, shift)}")
 
 
 def _sliding_problem(ref, i: int, F, row: Row) -> str:
@@ -418,8 +435,12 @@ def _sliding_problem(ref, i: int, F, row: Row) -> str:
     joint = f"joint {i + 1}"
     off = ref.axes[i].distance_to_point(F[:3, 3])
     if ref.kinds[i] == "R" and off > puma.TOL_POS:
+        before = ""
+        if ref.kinds[i - 1] == "P" and i > 1:       # T_{i-1} placed the sliding line: its d and a move it too
+            before = (f" — or d{i - 1} and a{i - 1}: they place the line of sliding joint {i} (any line parallel "
+                      f"to its axis is valid), and z{i} moves with it")
         return (f"{joint}: z{i} must lie on the axis of {joint}, the line it turns about; yours is {off:.4g} m "
                 f"from it at the home pose: check a{i} (yours: {_g(row.a)}), d{i} (yours: {row.d.text()}) and "
-                f"the constant in θ{i} (yours: {_g(row.theta.const)}°)")
+                f"the constant in θ{i} (yours: {_g(row.theta.const)}°){before}")
     return (f"frame {i} is not a valid DH frame: x{i} must be square to z{i - 1} and z{i} (the directions of the "
             f"axes of joints {i} and {i + 1}) and z{i} along the axis of {joint}; check θ{i} and α{i}")

@@ -15,8 +15,11 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from ..i18n import N_, _
 from ..units import Angle
 from .values import DHLabError, _real, describe
+
+MUST_BE_NUMBERS = N_("{name} must be numbers: {error}")
 
 __all__ = ["as_sequence", "as_float_array", "as_vector", "as_matrix4", "as_sym_matrix4", "rigid_problem"]
 
@@ -37,11 +40,13 @@ def as_sequence(x, name: str, expected: str, size: int | None = None) -> list:
     except TypeError:              # iterable in name only, e.g. a 0-d numpy array
         items = None
     if items is None:
-        why = " (a set has no order)" if isinstance(x, (set, frozenset)) else ""
-        raise DHLabError(f"{name} must be {expected}{why}; got {describe(x)}.")
+        message = (_("{name} must be {expected} (a set has no order); got {value}.") if isinstance(x, (set, frozenset))
+                   else _("{name} must be {expected}; got {value}."))
+        raise DHLabError(message.format(name=name, expected=expected, value=describe(x)))
     if size is not None and len(items) != size:
-        raise DHLabError(f"{name} must be {expected}: {size} item{'s' if size != 1 else ''}, got {len(items)}: "
-                         f"{describe(x)}.")
+        message = (_("{name} must be {expected}: {size} item, got {k}: {value}.") if size == 1 else
+                   _("{name} must be {expected}: {size} items, got {k}: {value}."))
+        raise DHLabError(message.format(name=name, expected=expected, size=size, k=len(items), value=describe(x)))
     return items
 
 
@@ -61,7 +66,7 @@ def as_float_array(x, name: str, finite: bool = False) -> np.ndarray:
         try:
             arr = np.array(_real(x, name), dtype=float)
         except DHLabError as error:
-            raise DHLabError(f"{name} must be numbers: {error}") from None
+            raise DHLabError(_(MUST_BE_NUMBERS).format(name=name, error=error)) from None
     if finite:
         _check_finite(arr, name)
     return arr
@@ -70,8 +75,8 @@ def as_float_array(x, name: str, finite: bool = False) -> np.ndarray:
 def _numpy_floats(x: np.ndarray, name: str) -> np.ndarray:
     if isinstance(x, np.ma.MaskedArray):
         if np.ma.is_masked(x):
-            raise DHLabError(f"{name} has masked (missing) values: fill them in first, e.g. {name}.filled(0.0), "
-                             "or drop those entries.")
+            raise DHLabError(_("{name} has masked (missing) values: fill them in first, e.g. {name}.filled(0.0), "
+                               "or drop those entries.").format(name=name))
         x = np.asarray(x.data)
     kind = x.dtype.kind
     if kind == "f":
@@ -80,10 +85,11 @@ def _numpy_floats(x: np.ndarray, name: str) -> np.ndarray:
         return x.astype(float)
     if kind == "O":
         return _objects_floats(x, name)
-    what = {"b": "True/False values", "c": "complex numbers", "M": "dates", "m": "time spans",
-            "U": "text", "S": "text"}.get(kind, f"values of type {x.dtype}")
-    raise DHLabError(f"{name} holds {what}, not real numbers: give plain numbers "
-                     "(angles in radians, lengths in the robot's unit).")
+    what = {"b": N_("True/False values"), "c": N_("complex numbers"), "M": N_("dates"), "m": N_("time spans"),
+            "U": N_("text"), "S": N_("text")}.get(kind)
+    what = _(what) if what else _("values of type {dtype}").format(dtype=x.dtype)
+    raise DHLabError(_("{name} holds {what}, not real numbers: give plain numbers (angles in radians, lengths in "
+                       "the robot's unit).").format(name=name, what=what))
 
 
 def _sequence_floats(x, name: str) -> np.ndarray:
@@ -93,8 +99,8 @@ def _sequence_floats(x, name: str) -> np.ndarray:
         obj = None
     if obj is None or any(isinstance(e, (list, tuple)) or isinstance(e, np.ndarray) and e.ndim
                           for e in obj.ravel()):      # a 0-d array is the number it holds
-        raise DHLabError(f"{name} = {describe(x)} is ragged: its rows have different lengths. "
-                         "Every row must have the same number of values.")
+        raise DHLabError(_("{name} = {value} is ragged: its rows have different lengths. Every row must have the "
+                           "same number of values.").format(name=name, value=describe(x)))
     return _objects_floats(obj, name)
 
 
@@ -109,11 +115,12 @@ def _objects_floats(obj: np.ndarray, name: str) -> np.ndarray:
     for k, e in enumerate(flat):
         where = name if obj.ndim == 0 else f"{name}[{', '.join(map(str, np.unravel_index(k, obj.shape)))}]"
         if isinstance(e, (list, tuple, np.ndarray)) and not (isinstance(e, np.ndarray) and e.ndim == 0):
-            raise DHLabError(f"{name} is ragged: {where} is a sequence where a number was expected.")
+            raise DHLabError(_("{name} is ragged: {where} is a sequence where a number was expected.").format(
+                name=name, where=where))
         try:
             out[k] = _real(e, where)
         except DHLabError as error:
-            raise DHLabError(f"{name} must be numbers: {error}") from None
+            raise DHLabError(_(MUST_BE_NUMBERS).format(name=name, error=error)) from None
     return out.reshape(obj.shape)
 
 
@@ -122,14 +129,16 @@ def _check_finite(arr: np.ndarray, name: str) -> None:
     if bad.any():
         index = tuple(int(i) for i in np.argwhere(bad)[0])
         where = f"{name}[{', '.join(map(str, index))}]" if arr.ndim else name
-        raise DHLabError(f"{where} is {arr[index]}: every value must be a finite number.")
+        raise DHLabError(_("{where} is {value}: every value must be a finite number.").format(
+            where=where, value=arr[index]))
 
 
 def as_vector(x, name: str, size: int) -> np.ndarray:
     """``size`` finite numbers as a float array of shape (size,)."""
     arr = as_float_array(x, name)
     if arr.shape != (size,):
-        raise DHLabError(f"{name} must be {size} numbers, got shape {arr.shape}: {describe(x)}.")
+        raise DHLabError(_("{name} must be {size} numbers, got shape {shape}: {value}.").format(
+            name=name, size=size, shape=arr.shape, value=describe(x)))
     _check_finite(arr, name)
     return arr
 
@@ -143,16 +152,15 @@ def as_matrix4(T, name: str = "T", batch: bool = False) -> np.ndarray:
     A sympy Matrix is accepted when it has no symbols.
     """
     if isinstance(T, sp.MatrixBase) and T.free_symbols:
-        raise DHLabError(f"{name} has symbols {sorted(map(str, T.free_symbols))}: "
-                         "substitute numbers (M.subs(...)) before using it numerically.")
+        raise DHLabError(_("{name} has symbols {symbols}: substitute numbers (M.subs(...)) before using it "
+                           "numerically.").format(name=name, symbols=sorted(map(str, T.free_symbols))))
     arr = as_float_array(T, name)
     ok = arr.shape == (4, 4) or (batch and arr.ndim == 3 and arr.shape[1:] == (4, 4))
     if not ok:
         expected = "(4, 4) or (N, 4, 4)" if batch else "(4, 4)"
-        raise DHLabError(
-            f"{name} must be a homogeneous matrix of shape {expected}, got shape {arr.shape}. "
-            "A homogeneous transform is [[R, p], [0, 0, 0, 1]] with a 3x3 rotation R and a position p."
-        )
+        raise DHLabError(_("{name} must be a homogeneous matrix of shape {expected}, got shape {shape}. A "
+                           "homogeneous transform is [[R, p], [0, 0, 0, 1]] with a 3x3 rotation R and a position "
+                           "p.").format(name=name, expected=expected, shape=arr.shape))
     _check_finite(arr, name)
     return arr
 
@@ -162,8 +170,8 @@ def as_sym_matrix4(T, name: str = "T") -> sp.Matrix:
     if not isinstance(T, sp.MatrixBase):
         return sp.Matrix(as_matrix4(T, name))
     if T.shape != (4, 4):
-        raise DHLabError(f"{name} must be a 4x4 homogeneous matrix, got shape {T.shape}. "
-                         "A homogeneous transform is [[R, p], [0, 0, 0, 1]].")
+        raise DHLabError(_("{name} must be a 4x4 homogeneous matrix, got shape {shape}. A homogeneous transform is "
+                           "[[R, p], [0, 0, 0, 1]].").format(name=name, shape=T.shape))
     for (i, j), e in np.ndenumerate(np.array(T.tolist(), dtype=object)):
         _real(e, f"{name}[{i}, {j}]", symbolic=True)
     return sp.Matrix(T)
@@ -173,13 +181,13 @@ def rigid_problem(T: np.ndarray, tol: float = 1e-9) -> str | None:
     """Why the 4x4 ``T`` is not a proper rigid transform, or None if it is."""
     R = T[:3, :3]
     if not np.allclose(T[3], [0, 0, 0, 1], atol=tol):
-        return f"its last row is {np.round(T[3], 6).tolist()}, not [0, 0, 0, 1]"
+        return _("its last row is {row}, not [0, 0, 0, 1]").format(row=np.round(T[3], 6).tolist())
     gram = R.T @ R
     if not np.allclose(gram, np.eye(3), atol=max(tol, 1e-9) * 10):
         err = np.abs(gram - np.eye(3)).max()
-        return (f"its rotation part is not orthonormal (|RᵀR − I| reaches {err:.3g}): "
-                "its columns must be unit vectors at right angles")
+        return _("its rotation part is not orthonormal (|RᵀR − I| reaches {err:.3g}): its columns must be unit "
+                 "vectors at right angles").format(err=err)
     det = np.linalg.det(R)
     if det < 0:
-        return f"det R = {det:.6g}: it is a reflection (a mirror), not a rotation"
+        return _("det R = {det:.6g}: it is a reflection (a mirror), not a rotation").format(det=det)
     return None

@@ -19,6 +19,7 @@ import math
 
 import numpy as np
 
+from ..i18n import _
 from ..units import Angle, AngleArray, deg2rad, has_angle_mark  # noqa: F401 (deg2rad: for the doctest)
 from .arrays import _check_finite, as_float_array
 from .values import FULL_TURN, DHLabError, as_angle, as_number, check_length_size, describe
@@ -43,12 +44,13 @@ def check_joint_values(q, links, name: str = "q", single: bool = False) -> np.nd
     if prismatic:
         _check_angle_marks(q, n, prismatic, name)
     arr = as_float_array(q, name)
-    plural = "s" if n != 1 else ""
     if arr.ndim == 0 or arr.shape[-1] != n or arr.ndim > 2 or (single and arr.ndim != 1):
-        expected = f"shape ({n},)" + ("" if single else f", or (N, {n}) for a batch")
-        hint = (" This function takes one pose, not a batch: pass one row, e.g. q[0]."
+        expected = (_("shape ({n},)") if single else _("shape ({n},), or (N, {n}) for a batch")).format(n=n)
+        hint = (_(" This function takes one pose, not a batch: pass one row, e.g. q[0].")
                 if single and arr.ndim == 2 and arr.shape[-1] == n else "")
-        raise DHLabError(f"{name} must hold {n} joint value{plural} ({expected}), got shape {arr.shape}.{hint}")
+        message = (_("{name} must hold {n} joint value ({expected}), got shape {shape}.") if n == 1 else
+                   _("{name} must hold {n} joint values ({expected}), got shape {shape}."))
+        raise DHLabError(message.format(name=name, n=n, expected=expected, shape=arr.shape) + hint)
     _check_finite(arr, name)
     if arr.size == 0:
         return arr
@@ -57,13 +59,13 @@ def check_joint_values(q, links, name: str = "q", single: bool = False) -> np.nd
         for j in revolute:
             value = np.abs(arr[..., j]).max()      # column by column: faster than max(axis=0)
             if value > FULL_TURN + 1e-9:
-                raise DHLabError(
-                    f"{name}[{j}] (joint {j + 1}, revolute) is {value:g} rad, more than a full turn: "
-                    f"angles are in radians. If you meant {value:g} degrees, pass dhlab.deg2rad({value:g})."
-                )
+                raise DHLabError(_("{name}[{j}] (joint {joint}, revolute) is {value:g} rad, more than a full turn: "
+                                   "angles are in radians. If you meant {value:g} degrees, pass "
+                                   "dhlab.deg2rad({value:g}).").format(name=name, j=j, joint=j + 1, value=value))
     for j in prismatic:
         column = arr[..., j]
-        check_length_size(float(np.abs(column).max()), f"{name}[{j}] (joint {j + 1}, prismatic)")
+        check_length_size(float(np.abs(column).max()),
+                          _("{name}[{j}] (joint {joint}, prismatic)").format(name=name, j=j, joint=j + 1))
         _check_not_radians(column, j, name)
     return arr
 
@@ -89,15 +91,12 @@ def _check_angle_marks(q, n: int, prismatic: list, name: str) -> None:
         return
     j = min(marked)
     if isinstance(q, AngleArray):
-        raise DHLabError(
-            f"{name} was made with dhlab.deg2rad(), but joint {j + 1} is prismatic: its value is a length, "
-            "not an angle. Convert only the revolute values, e.g. [deg2rad(30), 0.5, deg2rad(45)]."
-        )
+        raise DHLabError(_("{name} was made with dhlab.deg2rad(), but joint {joint} is prismatic: its value is a "
+                           "length, not an angle. Convert only the revolute values, e.g. [deg2rad(30), 0.5, "
+                           "deg2rad(45)].").format(name=name, joint=j + 1))
     shown = f" = {q[j]!r}" if isinstance(q, (list, tuple)) and len(q) == n else ""
-    raise DHLabError(
-        f"{name}[{j}]{shown} is an angle, but joint {j + 1} is prismatic: "
-        "give its displacement as a length (in the robot's unit)."
-    )
+    raise DHLabError(_("{name}[{j}]{shown} is an angle, but joint {joint} is prismatic: give its displacement as a "
+                       "length (in the robot's unit).").format(name=name, j=j, shown=shown, joint=j + 1))
 
 
 def _check_not_radians(column: np.ndarray, j: int, name: str) -> None:
@@ -107,10 +106,9 @@ def _check_not_radians(column: np.ndarray, j: int, name: str) -> None:
     hit = (degrees != 0) & (np.abs(degrees) <= 360) & (np.radians(degrees) == column)
     if hit.any():
         value = column[np.argmax(hit)] if column.ndim else column
-        raise DHLabError(
-            f"{name}[{j}] = {float(value)!r} is exactly deg2rad({float(np.degrees(value)):g}), an angle, but joint "
-            f"{j + 1} is prismatic: give its displacement as a length (in the robot's unit)."
-        )
+        raise DHLabError(_("{name}[{j}] = {value!r} is exactly deg2rad({degrees:g}), an angle, but joint {joint} is "
+                           "prismatic: give its displacement as a length (in the robot's unit).").format(
+                               name=name, j=j, value=float(value), degrees=float(np.degrees(value)), joint=j + 1))
 
 
 # ------------------------------------------------------------------------------------------
@@ -120,20 +118,23 @@ def as_qlim(qlim, revolute: bool, name: str = "qlim") -> tuple:
     """One joint's limits (low, high): finite, low < high; radians (at most a full turn
     either way) for a revolute joint, lengths (no deg2rad() mark, at most ``LARGEST_LENGTH``)
     for a prismatic one."""
-    unit = "radians, e.g. (deg2rad(-90), deg2rad(90))" if revolute else "lengths, e.g. (0.0, 0.5)"
     if not _is_pair(qlim):
-        raise DHLabError(f"{name} must be two numbers (low, high) in {unit}; got {describe(qlim)}.")
+        message = (_("{name} must be two numbers (low, high) in radians, e.g. (deg2rad(-90), deg2rad(90)); got "
+                     "{value}.") if revolute else
+                   _("{name} must be two numbers (low, high) in lengths, e.g. (0.0, 0.5); got {value}."))
+        raise DHLabError(message.format(name=name, value=describe(qlim)))
     if not revolute and has_angle_mark(qlim):
-        raise DHLabError(f"{name} of a prismatic joint is a range of lengths, but it was made with deg2rad(): "
-                         f"give lengths, e.g. (0.0, 0.5); got {describe(qlim)}.")
+        raise DHLabError(_("{name} of a prismatic joint is a range of lengths, but it was made with deg2rad(): give "
+                           "lengths, e.g. (0.0, 0.5); got {value}.").format(name=name, value=describe(qlim)))
     low, high = (as_number(v, f"{name}[{k}]") for k, v in enumerate(qlim))
     if not low < high:
-        raise DHLabError(f"{name} must be (low, high) with low < high, got {describe(qlim)}.")
+        raise DHLabError(_("{name} must be (low, high) with low < high, got {value}.").format(
+            name=name, value=describe(qlim)))
     for v in (low, high):
         if revolute:
-            as_angle(v, f"{name} (a revolute joint's limit)")
+            as_angle(v, _("{name} (a revolute joint's limit)").format(name=name))
         else:                       # a longer range overflows the robot's reach and its sampled poses
-            check_length_size(abs(v), f"{name} (a prismatic joint's limit)")
+            check_length_size(abs(v), _("{name} (a prismatic joint's limit)").format(name=name))
     return (low, high)
 
 

@@ -23,6 +23,7 @@ from fractions import Fraction
 import numpy as np
 import sympy as sp
 
+from ..i18n import N_, _
 from ..units import Angle, deg2rad, has_angle_mark  # noqa: F401 (deg2rad: for the doctest)
 
 __all__ = ["DHLabError", "FULL_TURN", "LARGEST_LENGTH", "describe", "as_number", "as_angle", "as_length",
@@ -39,6 +40,7 @@ class DHLabError(ValueError):
 
 
 DHLabError.__module__ = "dhlab.validation"   # where students meet it, and where it is imported from
+TOO_LARGE = N_("{name} = {value} is too large to be a number of this course.")
 
 
 def describe(x) -> str:
@@ -56,24 +58,26 @@ def describe(x) -> str:
 def _not_a_number(x, name: str) -> DHLabError:
     """The error for a value that is not a real number, with the fix for its type."""
     if x is None:
-        why = "it is missing (None): give a number"
+        why = _("it is missing (None): give a number")
     elif isinstance(x, (bool, np.bool_)):
-        why = "True/False is not a number here: give the number itself (e.g. 1.0 or 0.0)"
+        why = _("True/False is not a number here: give the number itself (e.g. 1.0 or 0.0)")
     elif isinstance(x, (str, bytes)):
-        why = "it is text: write the number without quotes (e.g. 0.5, not '0.5')"
+        why = _("it is text: write the number without quotes (e.g. 0.5, not '0.5')")
     elif isinstance(x, (complex, np.complexfloating)) or (isinstance(x, sp.Basic) and x.is_number):
-        why = "it is a complex number: only real numbers make a pose (check for a sqrt or arcsin of a value out of range)"
+        why = _("it is a complex number: only real numbers make a pose (check for a sqrt or arcsin of a value "
+                "out of range)")
     elif isinstance(x, (datetime.date, datetime.time, datetime.timedelta, np.datetime64, np.timedelta64)):
-        why = "it is a date or a time, not a number"
+        why = _("it is a date or a time, not a number")
     elif isinstance(x, sp.Basic) and x.free_symbols:
-        why = (f"it has the symbols {sorted(map(str, x.free_symbols))}: here pass plain numbers "
-               "(symbols belong in the symbolic functions, e.g. robot.fk_sym(); substitute with .subs())")
+        why = _("it has the symbols {symbols}: here pass plain numbers (symbols belong in the symbolic functions, "
+                "e.g. robot.fk_sym(); substitute with .subs())").format(symbols=sorted(map(str, x.free_symbols)))
     elif x is np.ma.masked:
-        why = "it is a masked (missing) value: fill it in first"
+        why = _("it is a masked (missing) value: fill it in first")
     else:
         kind = type(x).__name__
-        why = f"it is {'an' if kind[:1] in 'aeiou' else 'a'} {kind}, not a number"
-    return DHLabError(f"{name} = {describe(x)} is not a valid number: {why}.")
+        why = (_("it is an {kind}, not a number") if kind[:1] in "aeiou" else
+               _("it is a {kind}, not a number")).format(kind=kind)
+    return DHLabError(_("{name} = {value} is not a valid number: {why}.").format(name=name, value=describe(x), why=why))
 
 
 def _real(x, name: str, symbolic: bool = False):
@@ -82,7 +86,7 @@ def _real(x, name: str, symbolic: bool = False):
         try:
             return float(x)
         except OverflowError:
-            raise DHLabError(f"{name} = {describe(x)} is too large to be a number of this course.") from None
+            raise DHLabError(_(TOO_LARGE).format(name=name, value=describe(x))) from None
     if isinstance(x, np.ndarray) and x.ndim == 0 and not isinstance(x, np.ma.MaskedArray):
         return _real(x[()], name, symbolic)
     if isinstance(x, (Fraction, Decimal, np.floating, np.integer)) and not isinstance(x, np.bool_):
@@ -92,7 +96,7 @@ def _real(x, name: str, symbolic: bool = False):
             value = math.inf
         infinite = x.is_infinite() if isinstance(x, Decimal) else isinstance(x, np.floating) and np.isinf(x)
         if math.isinf(value) and not infinite:          # a finite value too large for a float (Decimal('1e400'))
-            raise DHLabError(f"{name} = {describe(x)} is too large to be a number of this course.") from None
+            raise DHLabError(_(TOO_LARGE).format(name=name, value=describe(x))) from None
         return value
     if isinstance(x, sp.Basic):
         return _sympy_real(x, name, symbolic)
@@ -101,14 +105,17 @@ def _real(x, name: str, symbolic: bool = False):
 
 def _sympy_real(x, name: str, symbolic: bool):
     if not isinstance(x, sp.Expr) or isinstance(x, sp.MatrixBase):
-        raise DHLabError(f"{name} = {describe(x)} is not a number or an expression (a {type(x).__name__}).")
+        raise DHLabError(_("{name} = {value} is not a number or an expression (a {type}).").format(
+            name=name, value=describe(x), type=type(x).__name__))
     if x.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
-        raise DHLabError(f"{name} = {describe(x)}: every value must be a finite number (no nan, oo or zoo).")
+        raise DHLabError(_("{name} = {value}: every value must be a finite number (no nan, oo or zoo).").format(
+            name=name, value=describe(x)))
     if x.free_symbols:
         if not symbolic:
             raise _not_a_number(x, name)
         if x.has(sp.I) or x.is_extended_real is False:
-            raise DHLabError(f"{name} = {describe(x)} is not real: angles and lengths are real numbers.")
+            raise DHLabError(_("{name} = {value} is not real: angles and lengths are real numbers.").format(
+                name=name, value=describe(x)))
         return x
     try:
         value = complex(x.evalf(30))
@@ -117,13 +124,14 @@ def _sympy_real(x, name: str, symbolic: bool):
     if abs(value.imag) > 1e-12 * max(1.0, abs(value.real)):
         raise _not_a_number(complex(value), name)
     if not math.isfinite(value.real):
-        raise DHLabError(f"{name} = {describe(x)} is too large: every value must be a finite number.")
+        raise DHLabError(_("{name} = {value} is too large: every value must be a finite number.").format(
+            name=name, value=describe(x)))
     return x if symbolic else float(value.real)
 
 
 def _finite(value, name: str):
     if isinstance(value, float) and not math.isfinite(value):
-        raise DHLabError(f"{name} is {value}: it must be a finite number.")
+        raise DHLabError(_("{name} is {value}: it must be a finite number.").format(name=name, value=value))
     return value
 
 
@@ -147,17 +155,19 @@ def as_angle(x, name: str, *, symbolic: bool = False, turns: float = 1.0):
     size = _magnitude(value)
     if size > turns * FULL_TURN + 1e-9:
         shown = f"{float(value):g}"
-        raise DHLabError(
-            f"{name} = {shown} rad is more than {'a full turn' if turns == 1 else f'{turns:g} turns'}: "
-            f"angles are in radians. If you meant {shown} degrees, pass dhlab.deg2rad({shown})."
-        )
+        message = (_("{name} = {shown} rad is more than a full turn: angles are in radians. If you meant {shown} "
+                     "degrees, pass dhlab.deg2rad({shown}).") if turns == 1 else
+                   _("{name} = {shown} rad is more than {turns:g} turns: angles are in radians. If you meant {shown} "
+                     "degrees, pass dhlab.deg2rad({shown})."))
+        raise DHLabError(message.format(name=name, shown=shown, turns=turns))
     return value
 
 
 def as_length(x, name: str, *, symbolic: bool = False):
     """A finite length, at most :data:`LARGEST_LENGTH`; a value made by ``deg2rad()`` (an angle) is refused."""
     if has_angle_mark(x):
-        raise DHLabError(f"{name} is a length, but you gave an angle ({describe(x)}): pass a plain number.")
+        raise DHLabError(_("{name} is a length, but you gave an angle ({value}): pass a plain number.").format(
+            name=name, value=describe(x)))
     value = as_number(x, name, symbolic=symbolic)
     check_length_size(_magnitude(value), name)
     return value
@@ -166,8 +176,9 @@ def as_length(x, name: str, *, symbolic: bool = False):
 def check_length_size(size: float, name: str) -> None:
     """Refuse a length whose size (absolute value) is beyond :data:`LARGEST_LENGTH`."""
     if size > LARGEST_LENGTH:
-        raise DHLabError(f"{name} = {size:g} is too large for a length: at most {LARGEST_LENGTH:g} in the "
-                         "robot's unit (beyond that, a pose or a distance overflows). Check the number and its unit.")
+        raise DHLabError(_("{name} = {size:g} is too large for a length: at most {largest:g} in the robot's unit "
+                           "(beyond that, a pose or a distance overflows). Check the number and its unit.").format(
+                               name=name, size=size, largest=LARGEST_LENGTH))
 
 
 def as_tolerance(x, name: str = "tol", upper: float = 1e-2, zero: bool = False) -> float:
@@ -175,18 +186,19 @@ def as_tolerance(x, name: str = "tol", upper: float = 1e-2, zero: bool = False) 
     value = as_number(x, name)
     if not (0 <= value if zero else 0 < value) or value > upper:
         low = "≥ 0" if zero else "> 0"
-        raise DHLabError(f"{name} must be a small number {low} and at most {upper:g} (e.g. 1e-9), "
-                         f"got {describe(x)}.")
+        raise DHLabError(_("{name} must be a small number {low} and at most {upper:g} (e.g. 1e-9), got {value}.").format(
+            name=name, low=low, upper=upper, value=describe(x)))
     return value
 
 
 def as_index(x, name: str, lo: int, hi: int) -> int:
     """A whole number in lo … hi (1.5, '1' and True are refused)."""
     if isinstance(x, (bool, np.bool_)) or not isinstance(x, (numbers.Integral, np.integer, sp.Integer)):
-        raise DHLabError(f"{name} must be a whole number from {lo} to {hi}, got {describe(x)}.")
+        raise DHLabError(_("{name} must be a whole number from {lo} to {hi}, got {value}.").format(
+            name=name, lo=lo, hi=hi, value=describe(x)))
     value = int(x)
     if not lo <= value <= hi:
-        raise DHLabError(f"{name} must be from {lo} to {hi}, got {value}.")
+        raise DHLabError(_("{name} must be from {lo} to {hi}, got {value}.").format(name=name, lo=lo, hi=hi, value=value))
     return value
 
 
@@ -197,7 +209,8 @@ def as_choice(x, allowed, name: str):
     """One of ``allowed`` (text options compared as typed)."""
     if not isinstance(x, (str, type(None), bool, int)) or x not in tuple(allowed):
         options = ", ".join(repr(a) for a in allowed)
-        raise DHLabError(f"{name} must be one of {options}, got {describe(x)}.")
+        raise DHLabError(_("{name} must be one of {options}, got {value}.").format(
+            name=name, options=options, value=describe(x)))
     return x
 
 
@@ -205,13 +218,13 @@ def as_flag(x, name: str) -> bool:
     """True or False (1/0 and numpy booleans too; text and None are refused)."""
     if isinstance(x, (bool, np.bool_)) or (isinstance(x, int) and x in (0, 1)):
         return bool(x)
-    raise DHLabError(f"{name} must be True or False, got {describe(x)}.")
+    raise DHLabError(_("{name} must be True or False, got {value}.").format(name=name, value=describe(x)))
 
 
 def as_text(x, name: str) -> str:
     """A string (a name, a label)."""
     if not isinstance(x, str):
-        raise DHLabError(f"{name} must be text (a str), got {describe(x)}.")
+        raise DHLabError(_("{name} must be text (a str), got {value}.").format(name=name, value=describe(x)))
     return x
 
 
@@ -221,5 +234,6 @@ def as_timeout(x, name: str = "timeout") -> float | None:
         return None
     value = as_number(x, name)
     if value <= 0:
-        raise DHLabError(f"{name} must be a positive number of seconds (or None for no limit), got {describe(x)}.")
+        raise DHLabError(_("{name} must be a positive number of seconds (or None for no limit), got {value}.").format(
+            name=name, value=describe(x)))
     return value

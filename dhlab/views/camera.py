@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..i18n import _
 from ..validation import DHLabError
 
 __all__ = ["PRESETS", "DEFAULT_CAMERA", "readable_camera", "triad_readability", "set_camera",
@@ -81,7 +82,7 @@ def readable_camera(frames, prefer=DEFAULT_CAMERA) -> tuple:
     beyond 1.5 counts no more), then as close to ``prefer`` as possible."""
     frames = np.asarray(frames, dtype=float)
     if frames.ndim != 3 or frames.shape[1:] != (4, 4):
-        raise DHLabError(f"readable_camera needs frames of shape (m, 4, 4), got {frames.shape}.")
+        raise DHLabError(_("readable_camera needs frames of shape (m, 4, 4), got {shape}.").format(shape=frames.shape))
     best, best_key = prefer, None
     for elev in (15.0, 20.0, 25.0, 30.0, 35.0, 40.0):
         for azim in np.arange(-180.0, 180.0, 5.0):
@@ -111,9 +112,9 @@ def set_camera(ax, preset="iso", *, frames=None, elev=None, azim=None) -> tuple:
     elif preset in PRESETS:
         view = PRESETS[preset]
     else:
-        raise DHLabError(f"camera preset must be one of 'iso', {', '.join(map(repr, PRESETS))}; "
-                         f"got {preset!r}.")
+        raise DHLabError(_("camera preset must be one of 'iso', {presets}; got {preset!r}.").format(
+            presets=", ".join(map(repr, PRESETS)), preset=preset))
     if not hasattr(ax, "view_init"):
-        raise DHLabError("set_camera needs a 3D axes (projection='3d').")
+        raise DHLabError(_("set_camera needs a 3D axes (projection='3d')."))
     ax.view_init(elev=view[0], azim=view[1])
     return view

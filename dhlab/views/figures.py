@@ -49,16 +49,18 @@ MIN_DPI = 100             # dots per inch, before the projector scale
 MIN_WIDTH_PX = 450        # pixels, before the projector scale
 MIN_TEXT_PX = 12          # the smallest text, in pixels (12 px = 8.64 pt at 100 dpi)
 
-_projector = {"scale": 1.0}
+_projector = {"scale": 1.0, "max_height_px": None}
 
 
-def projector(on: bool = True, scale: float = 1.5) -> float:
+def projector(on: bool = True, scale: float = 1.5, max_height_px: float | None = None) -> float:
     """Make every figure and panel made from now on ``scale`` times larger (a
     lecture hall), or back to normal with ``projector(False)``. Returns the scale
-    now in force.
+    now in force. ``max_height_px``: a figure that would be taller than this
+    grows less (never below its normal size), so that it still fits a slide.
 
     Only figures made afterwards change: run it at the top of a notebook (or
-    in a startup file) and re-run the cells.
+    in a startup file) and re-run the cells. (``dhlab.projector()`` calls this
+    and also makes the page's text larger: :mod:`dhlab.views.projector`.)
 
     >>> projector(scale=1.5)
     1.5
@@ -72,9 +74,11 @@ def projector(on: bool = True, scale: float = 1.5) -> float:
         if not 0.5 <= scale <= 4:
             raise DHLabError(f"projector scale must be between 0.5 and 4, got {scale:g}; "
                              "1.5 suits most lecture halls.")
-        _projector["scale"] = scale
+        if max_height_px is not None:
+            max_height_px = _positive(max_height_px, "max_height_px", hint="pixels, e.g. 760")
+        _projector.update(scale=scale, max_height_px=max_height_px)
     else:
-        _projector["scale"] = 1.0
+        _projector.update(scale=1.0, max_height_px=None)
     return _projector["scale"]
 
 
@@ -100,9 +104,9 @@ def _positive(value, name, hint=""):
 
 def figure_size(figsize=None, dpi=None) -> tuple:
     """``((width, height) in inches, dpi)`` for a course figure: the projector
-    scale applied to the dpi, then at least :data:`MIN_DPI` dpi and
-    :data:`MIN_WIDTH_PX` px wide (scaled up with its shape kept). ``None``:
-    matplotlib's default size and dpi.
+    scale applied to the dpi (no taller than the projector's ``max_height_px``),
+    then at least :data:`MIN_DPI` dpi and :data:`MIN_WIDTH_PX` px wide (scaled up
+    with its shape kept). ``None``: matplotlib's default size and dpi.
 
     >>> figure_size((3.6, 3.6), dpi=80)
     ((4.5, 4.5), 100.0)
@@ -123,7 +127,11 @@ def figure_size(figsize=None, dpi=None) -> tuple:
     if width * base < MIN_WIDTH_PX:                       # too narrow: scale up, keep the shape
         grow = MIN_WIDTH_PX / (width * base)
         width, height = width * grow, height * grow
-    return (round(width, 4), round(height, 4)), base * projector_scale()
+    dpi = base * projector_scale()
+    tallest = _projector["max_height_px"]
+    if tallest is not None and height * dpi > tallest:     # on a slide: grow only as far as it fits
+        dpi = max(base, tallest / height)
+    return (round(width, 4), round(height, 4)), dpi
 
 
 class CourseFigure(Figure):

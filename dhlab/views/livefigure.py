@@ -42,6 +42,7 @@ import matplotlib
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 
+from ..i18n import _
 from ..validation import DHLabError
 from .figures import new_figure
 
@@ -73,7 +74,7 @@ class LiveFigure:
 
     def __init__(self, figsize=(6, 6), dpi=100, backend: str = "auto"):
         if not isinstance(backend, str) or backend not in ("auto", "ipympl", "image"):
-            raise DHLabError(f"backend must be 'auto', 'ipympl' or 'image', got {backend!r}.")
+            raise DHLabError(_("backend must be 'auto', 'ipympl' or 'image', got {backend!r}.").format(backend=backend))
         # at least 100 dpi and 450 px wide, text at least 12 px, the projector scale applied
         self.figure = new_figure(figsize, dpi=dpi, layout="none")
         self.uses_ipympl = backend == "ipympl" or (backend == "auto" and ipympl_active())
@@ -177,7 +178,7 @@ def encode_png(rgba: np.ndarray, alpha: bool = False) -> bytes:
     and the fastest zlib level take ~6 ms for 600x600 pixels, against ~12 ms
     for Pillow's default PNG writer.
     """
-    height, width, _ = rgba.shape
+    height, width = rgba.shape[:2]
     channels = 4 if alpha else 3
     rows = np.zeros((height, 1 + channels * width), np.uint8)  # each row: filter byte 0, then pixels
     rows[:, 1:] = rgba[..., :channels].reshape(height, -1)

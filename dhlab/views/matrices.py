@@ -36,6 +36,7 @@ import re
 
 import sympy as sp
 
+from ..i18n import _
 from ..symbolic import _check_finite_entries, compact, legend
 from ..validation import DHLabError, as_number, as_text
 
@@ -189,7 +190,7 @@ def latex_width_px(latex: str) -> float:
     True
     """
     if not isinstance(latex, str):
-        raise DHLabError(f"latex_width_px: expected a LaTeX string, got {type(latex).__name__}.")
+        raise DHLabError(_("latex_width_px: expected a LaTeX string, got {type}.").format(type=type(latex).__name__))
     return _linear_em(latex) * PX_PER_EM
 
 
@@ -209,10 +210,10 @@ def _symbols_of(symbols, M) -> tuple:
     try:
         symbols = tuple(symbols)
     except TypeError:
-        raise DHLabError(f"show_matrix: symbols must be the joint symbols (e.g. robot.q_symbols) or a "
-                         f"robot, got {type(symbols).__name__}.") from None
+        raise DHLabError(_("show_matrix: symbols must be the joint symbols (e.g. robot.q_symbols) or a robot, got "
+                           "{type}.").format(type=type(symbols).__name__)) from None
     if not all(isinstance(s, sp.Symbol) for s in symbols):
-        raise DHLabError("show_matrix: symbols must all be sympy Symbols, e.g. sympy.symbols('q1:7').")
+        raise DHLabError(_("show_matrix: symbols must all be sympy Symbols, e.g. sympy.symbols('q1:7')."))
     return symbols
 
 
@@ -225,8 +226,8 @@ def _as_matrix(M) -> sp.Matrix:
         try:
             M = sp.Matrix(M)
         except Exception:      # sympy raises several kinds for things that are not matrices
-            raise DHLabError(f"show_matrix: expected a sympy Matrix (or a nested list of expressions), "
-                             f"got {type(M).__name__}.") from None
+            raise DHLabError(_("show_matrix: expected a sympy Matrix (or a nested list of expressions), got "
+                               "{type}.").format(type=type(M).__name__)) from None
     _check_finite_entries(M, "show_matrix")     # no nan, zoo or oo, the entry named
     return M
 
@@ -245,7 +246,8 @@ class ShownMatrix:
         self.full = _as_matrix(M)
         self.max_width_px = as_number(max_width_px, "max_width_px")
         if not self.max_width_px > 100:
-            raise DHLabError(f"show_matrix: max_width_px must be a number of pixels above 100, got {max_width_px!r}.")
+            raise DHLabError(_("show_matrix: max_width_px must be a number of pixels above 100, got {value!r}.").format(
+                value=max_width_px))
         self.name = None if name is None else as_text(name, "name")
         q = _symbols_of(symbols, self.full)
         self.compact = compact(self.full, q) if q else self.full
@@ -289,7 +291,8 @@ class ShownMatrix:
 
     def _column_piece(self, cols) -> str:
         one = [c + 1 for c in cols]
-        what = f"column {one[0]}" if len(one) == 1 else f"columns {one[0]}–{one[-1]}"
+        what = (_("column {k}").format(k=one[0]) if len(one) == 1 else
+                _("columns {first}–{last}").format(first=one[0], last=one[-1]))
         if len(cols) == self.compact.cols:
             return self._head + sp.latex(self.compact)
         return self._label(what) + sp.latex(self.compact[:, cols])
@@ -333,8 +336,8 @@ class ShownMatrix:
         if self.legend:
             blocks.append(f"<small>{self.legend}</small>")
         if len(self.pieces) > 1:
-            blocks.append("<small>(split to fit the page; the whole matrix: <code>.full</code>, "
-                          "in C/S names: <code>.compact</code>)</small>")
+            blocks.append(_("<small>(split to fit the page; the whole matrix: <code>.full</code>, "
+                            "in C/S names: <code>.compact</code>)</small>"))
         return "\n\n".join(blocks)
 
     def _repr_latex_(self) -> str:

@@ -31,6 +31,16 @@ __all__ = ["Panel", "joint_sliders", "slider_to_q", "q_to_slider", "unit_of", "c
 
 REVOLUTE_STEP_DEG = 0.5
 PRISMATIC_STEPS = 1000         # a prismatic slider's range is cut into this many steps
+SLIDER_PX, SIDE_PX, ERROR_PX = 330, 370, 520   # widths at normal size: a slider, the controls, an error
+
+
+def control_width(px: float) -> str:
+    """A control's width: ``px`` at normal size, wider under :func:`dhlab.projector` (as its
+    widgets' text), so that a panel made afterwards never squeezes a slider or a readout."""
+    from .figures import projector_scale
+    from .projector import widgets_scale
+
+    return f"{px * widgets_scale(projector_scale()):g}px"
 
 
 def unit_of(robot, link) -> str:
@@ -79,7 +89,7 @@ def joint_sliders(robot, q, labels=None):
             description=label, continuous_update=True,
             readout_format=".1f" if link.is_revolute else ".3f",
             tooltip=f"{label}: {'revolute, degrees' if link.is_revolute else 'prismatic, length'}",
-            style={"description_width": "3em"}, layout=widgets.Layout(width="330px"))
+            style={"description_width": "3em"}, layout=widgets.Layout(width=control_width(SLIDER_PX)))
         sliders.append(slider)
         rows.append(widgets.HBox([slider, widgets.Label(unit_of(robot, link))]))
     return rows, sliders
@@ -106,7 +116,7 @@ def view_controls(view, run=None) -> list:
         rows.append(camera)
     zoom = widgets.FloatSlider(value=view.zoom, min=0.5, max=3.0, step=0.05, description="zoom",
                                readout_format=".2f", continuous_update=False,
-                               style={"description_width": "3em"}, layout=widgets.Layout(width="330px"))
+                               style={"description_width": "3em"}, layout=widgets.Layout(width=control_width(SLIDER_PX)))
     zoom.observe(changed(view.set_zoom), names="value")
     rows.append(zoom)
     toggles = []
@@ -190,9 +200,6 @@ class SliderEchoes:
         return "student"
 
 
-SIDE_WIDTH = "370px"          # the controls beside a figure: 330 px sliders and their readouts
-
-
 class Panel(widgets.HBox):
     """A figure on the left, controls on the right (or under it: ``below=True``);
     the base of the course's panels.
@@ -207,14 +214,14 @@ class Panel(widgets.HBox):
         self.live = live
         self.figure = live.figure
         self.error = None
-        self.error_box = widgets.HTML(layout=widgets.Layout(max_width="520px"))
+        self.error_box = widgets.HTML(layout=widgets.Layout(max_width=control_width(ERROR_PX)))
         # beside the figure (wrapped under it in a narrow column), or always under it (``below``:
         # a wide figure, e.g. two subplots side by side)
         # beside the figure the controls have a fixed width, so the row wraps (or not) by the
         # column's width alone, never because a readout grew while a slider moves
         side = widgets.VBox([*controls, self.error_box],
                             layout=widgets.Layout(margin="0.5em 0 0 0" if below else "0 0 0 1em",
-                                                  width=None if below else SIDE_WIDTH,
+                                                  width=None if below else control_width(SIDE_PX),
                                                   flex=None if below else "0 0 auto"))
         # the figure keeps its size: a flex row may otherwise shrink the canvas, which then shows
         # only part of the picture (its left side cut, as seen in a narrow browser column)

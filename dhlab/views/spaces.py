@@ -40,6 +40,7 @@ from matplotlib.patches import Rectangle
 from matplotlib.ticker import MultipleLocator
 from matplotlib.transforms import offset_copy
 
+from ..i18n import _
 from ..validation import DHLabError, as_choice, as_length, check_joint_values, describe
 from .livefigure import LiveFigure
 from .panel import Panel, SliderEchoes, checked_start, joint_sliders, q_to_slider, unit_of
@@ -76,7 +77,8 @@ def wrap_into_limits(robot, q) -> tuple:
 def _check_ik_function(ik) -> None:
     """``ik`` must be a function that can be called as ik(x, y)."""
     if not callable(ik):
-        raise DHLabError(f"ik must be a function ik(x, y) -> list of joint vectors, got {describe(ik)}.")
+        raise DHLabError(_("ik must be a function ik(x, y) -> list of joint vectors, got {value}.").format(
+            value=describe(ik)))
     try:
         signature = inspect.signature(ik)
     except (TypeError, ValueError):      # some built-in callables have none: they are tried as they are
@@ -84,8 +86,9 @@ def _check_ik_function(ik) -> None:
     try:
         signature.bind(0.0, 0.0)
     except TypeError:
-        raise DHLabError(f"ik must be a function ik(x, y) of the target's two coordinates (e.g. functools."
-                         f"partial(dhlab.ik.pr_mechanism_ik, robot)); this one takes {signature}.") from None
+        raise DHLabError(_("ik must be a function ik(x, y) of the target's two coordinates (e.g. functools."
+                           "partial(dhlab.ik.pr_mechanism_ik, robot)); this one takes {signature}.").format(
+                               signature=signature)) from None
 
 
 class SpacesPanel(Panel):
@@ -100,13 +103,13 @@ class SpacesPanel(Panel):
     def __init__(self, robot, q=None, *, ik=None, figsize=FIGSIZE, backend="auto"):
         checked_robot(robot)
         if callable(q) and ik is None:
-            raise DHLabError("spaces(robot, q=None, *, ik=None): the second argument is the start "
-                             "pose q; pass the inverse kinematics by name, spaces(robot, ik=...).")
+            raise DHLabError(_("spaces(robot, q=None, *, ik=None): the second argument is the start pose q; pass "
+                               "the inverse kinematics by name, spaces(robot, ik=...)."))
         if ik is not None:
             _check_ik_function(ik)
         if robot.n != 2:
-            raise DHLabError(f"the joint-space view needs a 2-DOF mechanism (one axis per joint); "
-                             f"{robot.name!r} has {robot.n} joints.")
+            raise DHLabError(_("the joint-space view needs a 2-DOF mechanism (one axis per joint); {name!r} has {n} "
+                               "joints.").format(name=robot.name, n=robot.n))
         self.robot, self.ik = robot, ik
         self.solutions = []
         q = default_q(robot) if q is None else checked_start(robot, q)
@@ -120,18 +123,18 @@ class SpacesPanel(Panel):
         # under the figure (two subplots side by side need the width): the joints and the
         # target in two columns, the inverse kinematics' report under both
         self.message = widgets.HTML(layout=widgets.Layout(max_width=f"{CONTROLS_WIDTH_PX}px"))
-        columns = [widgets.VBox([widgets.HTML("<b>Joints</b> (<i>articulaciones</i>)"), *rows],
+        columns = [widgets.VBox([widgets.HTML(_("<b>Joints</b> (<i>articulaciones</i>)")), *rows],
                                 layout=widgets.Layout(margin="0 2em 0 0"))]
         self.target_sliders = []
         self.branch_buttons = None
         if ik is not None:
             self.target_sliders = self._target_sliders()
             self.branch_buttons = widgets.ToggleButtons(
-                options=list(SOLUTION_NAMES[:2]), description="branch",
-                tooltips=["solution A of the inverse kinematics", "solution B"],
+                options=list(SOLUTION_NAMES[:2]), description=_("branch"),
+                tooltips=[_("solution A of the inverse kinematics"), _("solution B")],
                 style={"description_width": "3em", "button_width": "3em"})
             columns.append(widgets.VBox([
-                widgets.HTML("<b>Target</b> of the end effector (inverse kinematics)"),
+                widgets.HTML(_("<b>Target</b> of the end effector (inverse kinematics)")),
                 *self.target_sliders, self.branch_buttons]))
         controls = [widgets.HBox(columns, layout=widgets.Layout(flex_flow="row wrap")), self.message]
         super().__init__(live, controls, below=True)
@@ -163,9 +166,9 @@ class SpacesPanel(Panel):
         ax.set(xlim=(lo1 - pad1, hi1 + pad1), ylim=(lo2 - pad2, hi2 + pad2),
                xlabel=f"{labels[0]} [{unit_of(self.robot, self.robot.links[0])}]",
                ylabel=f"{labels[1]} [{unit_of(self.robot, self.robot.links[1])}]",
-               title="Joint space (espacio articular)")
+               title=_("Joint space (espacio articular)"))
         ax.add_patch(Rectangle((lo1, lo2), hi1 - lo1, hi2 - lo2, fc="0.93", ec="0.5", lw=1,
-                               label="joint limits"))
+                               label=_("joint limits")))
         for axis, link, (lo, hi) in ((ax.xaxis, self.robot.links[0], (lo1, hi1)),
                                      (ax.yaxis, self.robot.links[1], (lo2, hi2))):
             if link.is_revolute and hi - lo >= 270:      # angles: ticks every 90° (or 180°)
@@ -189,7 +192,7 @@ class SpacesPanel(Panel):
                                   labels=False, color=c, alpha=0.45, style="stick") for c in GHOST_COLORS]
         self.view = robot_view(self.robot, q, ax=ax, live=live, planar=planar, framing="fixed")
         self.view.setup_axes(ax)
-        ax.set_title("Cartesian space (espacio cartesiano)")
+        ax.set_title(_("Cartesian space (espacio cartesiano)"))
         if planar:                     # the workspace, as the end effector positions it can reach
             ax.plot(*self._workspace_points().T, ".", ms=1, color="0.8", zorder=0)
         self.target_mark, = ax.plot([], [], "x", ms=12, mew=3, color="k") if planar else \
@@ -255,8 +258,8 @@ class SpacesPanel(Panel):
         the robot to the solution of its own branch (never to another branch:
         see :meth:`set_branch`)."""
         if self.ik is None:
-            raise DHLabError("this panel has no inverse kinematics: pass ik=... to spaces().")
-        x, y = as_length(x, "target x"), as_length(y, "target y")
+            raise DHLabError(_("this panel has no inverse kinematics: pass ik=... to spaces()."))
+        x, y = as_length(x, _("target x")), as_length(y, _("target y"))
         self._set_target_sliders((x, y))
         self._show_solutions((x, y))
         q, note = self.q, ""
@@ -266,10 +269,11 @@ class SpacesPanel(Panel):
             self._set_quietly(self.sliders, [q_to_slider(link, v) for link, v in zip(self.robot.links, q)])
         elif self.solutions:
             others = [SOLUTION_NAMES[j] for j, ok in enumerate(self.solutions_ok) if ok]
-            note = (f"<br><i>Branch {self.branch} cannot reach this target within the joint limits: "
-                    "the robot stays where it is" + (f"; branch {' or '.join(others)} can (choose it "
-                                                     "with the branch buttons)." if others else ".")
-                    + "</i>")
+            why = (_("Branch {branch} cannot reach this target within the joint limits: the robot stays where it "
+                     "is; branch {others} can (choose it with the branch buttons).") if others else
+                   _("Branch {branch} cannot reach this target within the joint limits: the robot stays where it "
+                     "is."))
+            note = "<br><i>" + why.format(branch=self.branch, others=_(" or ").join(others)) + "</i>"
         self._draw(q, (x, y))
         self._say(self._ik_text((x, y)) + note)
 
@@ -298,8 +302,8 @@ class SpacesPanel(Panel):
         """Solve the IK for ``target`` and remember the solutions; return those within the joint limits."""
         solutions, self.ik_message = self._solve(*target)
         wrapped = [wrap_into_limits(self.robot, s) for s in solutions[:MAX_SOLUTIONS]]
-        self.solutions = [s for s, _ in wrapped]
-        self.solutions_ok = [ok for _, ok in wrapped]
+        self.solutions = [s for s, ok in wrapped]
+        self.solutions_ok = [ok for s, ok in wrapped]
         self.target = target
         return [s for s, ok in wrapped if ok]
 
@@ -310,21 +314,24 @@ class SpacesPanel(Panel):
         except DHLabError:
             raise
         except Exception as exc:        # a bug in the student's ik: say where it happened
-            raise DHLabError(f"ik({x:g}, {y:g}) failed: {type(exc).__name__}: {exc}") from exc
-        expected = "ik must return a list of joint vectors, [[q1, q2], ...] ([] when there is none)"
+            raise DHLabError(_("ik({x:g}, {y:g}) failed: {error}: {message}").format(
+                x=x, y=y, error=type(exc).__name__, message=exc)) from exc
+        expected = _("ik must return a list of joint vectors, [[q1, q2], ...] ([] when there is none)")
         if not isinstance(solutions, (list, tuple, np.ndarray)) or getattr(solutions, "ndim", 1) == 0:
-            raise DHLabError(f"{expected}; ik({x:g}, {y:g}) returned {describe(solutions)}.")
+            raise DHLabError(_("{expected}; ik({x:g}, {y:g}) returned {value}.").format(
+                expected=expected, x=x, y=y, value=describe(solutions)))
         message = getattr(solutions, "message", "")
         message = message if isinstance(message, str) else ""
         if len(solutions) == 0:
             return [], message
         try:
-            checked = check_joint_values(solutions, self.robot.links, name="the solutions")
+            checked = check_joint_values(solutions, self.robot.links, name=_("the solutions"))
         except DHLabError as error:
-            raise DHLabError(f"{expected}; ik({x:g}, {y:g}) returned {describe(solutions)}: {error}") from None
+            raise DHLabError(_("{expected}; ik({x:g}, {y:g}) returned {value}: {error}").format(
+                expected=expected, x=x, y=y, value=describe(solutions), error=error)) from None
         if checked.ndim != 2:
-            raise DHLabError(f"{expected}; ik({x:g}, {y:g}) returned one joint vector, "
-                             f"{describe(solutions)}: put it in a list, [{describe(solutions)}].")
+            raise DHLabError(_("{expected}; ik({x:g}, {y:g}) returned one joint vector, {value}: put it in a list, "
+                               "[{value}].").format(expected=expected, x=x, y=y, value=describe(solutions)))
         return list(checked), message
 
     def _draw(self, q, target):
@@ -356,12 +363,14 @@ class SpacesPanel(Panel):
 
     def _ik_text(self, target):
         x, y = target
-        lines = [f"Target (x, y) = ({x:.3f}, {y:.3f}): {html.escape(self.ik_message or f'{len(self.solutions)} solution(s)')}"]
+        count = _("{n} solution(s)").format(n=len(self.solutions))
+        lines = [_("Target (x, y) = ({x:.3f}, {y:.3f}): {message}").format(
+            x=x, y=y, message=html.escape(self.ik_message or count))]
         for name, s, ok in zip(SOLUTION_NAMES, self.solutions, self.solutions_ok):
             shown = ", ".join(
                 f"{label} = {q_to_slider(link, v):.3f}{unit_of(self.robot, link) if link.is_revolute else ''}"
                 for label, link, v in zip(self.robot.joint_labels, self.robot.links, s))
-            lines.append(f"<b>{name}</b>: {shown}" + ("" if ok else " <i>(outside the joint limits)</i>"))
+            lines.append(f"<b>{name}</b>: {shown}" + ("" if ok else _(" <i>(outside the joint limits)</i>")))
         return "<br>".join(lines)
 
     def _say(self, text):
@@ -372,7 +381,7 @@ class SpacesPanel(Panel):
             self.echoes.set(slider, value)
 
     def __repr__(self):
-        return f"<dhlab joint/Cartesian spaces: {self.robot.name}>"
+        return _("<dhlab joint/Cartesian spaces: {name}>").format(name=self.robot.name)
 
 
 def spaces(robot, q=None, *, ik=None, figsize=FIGSIZE, backend: str = "auto") -> SpacesPanel:

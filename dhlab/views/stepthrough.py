@@ -23,6 +23,7 @@ import math
 import ipywidgets as widgets
 import numpy as np
 
+from ..i18n import N_, _
 from ..transforms import Rx, Rz, trans
 from ..validation import (DHLabError, as_angle, as_index, as_length, as_matrix4, as_number, as_text, describe,
                           has_angle_mark)
@@ -39,10 +40,11 @@ __all__ = ["dh_partial", "dh_params", "motion_text", "stepthrough", "stepthrough
 
 # (name, parameter, what it does) for the four motions, in the DH order
 MOTIONS = (
-    ("Rz(θ)", "θ", "rotate by θ about z<sub>i−1</sub>"),
-    ("Tz(d)", "d", "translate by d along z<sub>i−1</sub>"),
-    ("Tx(a)", "a", "translate by a along the new x axis, which is x<sub>i</sub> (the common normal, <i>normal común</i>)"),
-    ("Rx(α)", "α", "rotate by α about x<sub>i</sub>, bringing z onto z<sub>i</sub>"),
+    ("Rz(θ)", "θ", N_("rotate by θ about z<sub>i−1</sub>")),
+    ("Tz(d)", "d", N_("translate by d along z<sub>i−1</sub>")),
+    ("Tx(a)", "a", N_("translate by a along the new x axis, which is x<sub>i</sub> (the common normal, "
+                      "<i>normal común</i>)")),
+    ("Rx(α)", "α", N_("rotate by α about x<sub>i</sub>, bringing z onto z<sub>i</sub>")),
 )
 _MAKERS = (Rz, lambda d: trans(0, 0, d), lambda a: trans(a, 0, 0), Rx)
 
@@ -62,7 +64,7 @@ def dh_partial(theta: float, d: float, a: float, alpha: float, step: float) -> n
 def _checked_step(step) -> float:
     step = as_number(step, "step")
     if not 0 <= step <= 4:
-        raise DHLabError(f"step must be between 0 (frame i-1) and 4 (frame i), got {step:g}.")
+        raise DHLabError(_("step must be between 0 (frame i-1) and 4 (frame i), got {step:g}.").format(step=step))
     return step
 
 
@@ -79,10 +81,9 @@ def dh_params(A, tol: float = 1e-9):
     a = A[0, 3] * math.cos(theta) + A[1, 3] * math.sin(theta)
     rebuilt = dh_partial(theta, d, a, alpha, 4)
     if not np.allclose(rebuilt, A, atol=tol * max(1.0, np.abs(A[:3, 3]).max())):
-        raise DHLabError(
-            "this link's matrix is not of the DH form Rz(θ)·Tz(d)·Tx(a)·Rx(α) "
-            f"(largest mismatch {np.abs(rebuilt - A).max():.3g}); the step-through needs a "
-            "standard DH link: write the robot as a DH table (dhlab.DHRobot.from_table).")
+        raise DHLabError(_("this link's matrix is not of the DH form Rz(θ)·Tz(d)·Tx(a)·Rx(α) (largest mismatch "
+                           "{mismatch:.3g}); the step-through needs a standard DH link: write the robot as a DH table "
+                           "(dhlab.DHRobot.from_table).").format(mismatch=np.abs(rebuilt - A).max()))
     return theta, d, a, alpha
 
 
@@ -94,20 +95,20 @@ def motion_text(step: float, theta: float, d: float, a: float, alpha: float, uni
     '<b>Step 2 of 4: Tz(d)</b>, d = 2 m: translate by d along z<sub>i−1</sub>. Done: 50 %.'
     """
     if step >= 4:
-        return ("<b>Done:</b> all four motions applied, the frame is now {S<sub>i</sub>}: "
-                "A<sub>i</sub> = Rz(θ)·Tz(d)·Tx(a)·Rx(α).")
+        return _("<b>Done:</b> all four motions applied, the frame is now {S<sub>i</sub>}: "
+                 "A<sub>i</sub> = Rz(θ)·Tz(d)·Tx(a)·Rx(α).")
     k = int(step)
+    fields = dict(k=k + 1, motion=MOTIONS[k][0], what=_describe(k, theta, d, a, alpha, unit))
     if step == k:                      # between two motions: say what comes next
         done = "·".join(m[0] for m in MOTIONS[:k])
-        where = f"After {done}" if k else "At {S<sub>i−1</sub>}"
-        return (f"{where}. <b>Next, step {k + 1} of 4: {MOTIONS[k][0]}</b>, "
-                f"{_describe(k, theta, d, a, alpha, unit)}.")
-    return (f"<b>Step {k + 1} of 4: {MOTIONS[k][0]}</b>, "
-            f"{_describe(k, theta, d, a, alpha, unit)}. Done: {100 * (step - k):.0f} %.")
+        where = _("After {done}").format(done=done) if k else _("At {S<sub>i−1</sub>}")
+        return where + _(". <b>Next, step {k} of 4: {motion}</b>, {what}.").format(**fields)
+    return _("<b>Step {k} of 4: {motion}</b>, {what}. Done: {percent:.0f} %.").format(
+        percent=100 * (step - k), **fields)
 
 
 def _describe(k, theta, d, a, alpha, unit):
-    _, param, what = MOTIONS[k]
+    param, what = MOTIONS[k][1], _(MOTIONS[k][2])
     value = (theta, d, a, alpha)[k]
     shown = (f"{round(math.degrees(value), 1) + 0.0:.1f}°" if param in "θα"
              else f"{round(value, 6) + 0.0:.4g}{(' ' + unit) if unit else ''}")
@@ -130,15 +131,15 @@ class StepThroughPanel(Panel):
         self.length = 0.3 * max(abs(d), abs(a)) if max(abs(d), abs(a)) > 1e-9 else 1.0
         live = LiveFigure(figsize=figsize, backend=backend)
         self._build_figure(live)
-        self.slider = widgets.FloatSlider(value=step, min=0, max=4, step=0.05, description="step",
+        self.slider = widgets.FloatSlider(value=step, min=0, max=4, step=0.05, description=_("step"),
                                           readout_format=".2f", continuous_update=True,
                                           layout=widgets.Layout(width="360px"))
         self.text = widgets.HTML(layout=widgets.Layout(max_width="480px"))
         self.matrix = widgets.HTML()
         self.camera = widgets.ToggleButtons(options=["iso", "front", "side", "top"], value="iso",
-                                            description="view",
+                                            description=_("view"),
                                             style={"description_width": "3em", "button_width": "4.2em"})
-        self.zoom = widgets.FloatSlider(value=1.0, min=0.5, max=3.0, step=0.05, description="zoom",
+        self.zoom = widgets.FloatSlider(value=1.0, min=0.5, max=3.0, step=0.05, description=_("zoom"),
                                         readout_format=".2f", continuous_update=False,
                                         style={"description_width": "3em"},
                                         layout=widgets.Layout(width="330px"))
@@ -161,8 +162,8 @@ class StepThroughPanel(Panel):
         ax.set_proj_type("ortho")
         set_camera(ax, "iso", frames=np.array([start, end]))   # both triads read
         # the title belongs to this axes; two lines fit the narrowest figure
-        ax.set_title(rf"Link {self.i}: the thick frame goes" "\n"
-                     rf"from $\{{S_{{{self.i - 1}}}\}}$ to $\{{S_{{{self.i}}}\}}$", pad=2)
+        ax.set_title(_("Link {i}: the thick frame goes\nfrom {start} to {end}").format(
+            i=self.i, start=rf"$\{{S_{{{self.i - 1}}}\}}$", end=rf"$\{{S_{{{self.i}}}\}}$"), pad=2)
         # still: frame i-1 (solid), frame i (faint, where the motions end), the z_(i-1) axis
         self._triad(ax, start, lw=2, alpha=1.0)
         self._triad(ax, end, lw=2.2, alpha=0.6, ls="--")      # the target: dashed, still visible projected
@@ -219,7 +220,7 @@ class StepThroughPanel(Panel):
 
     def _product(self, step):
         names = []
-        for k, (name, _, _) in enumerate(MOTIONS):
+        for k, name in enumerate(m[0] for m in MOTIONS):
             part = min(max(step - k, 0.0), 1.0)
             if part > 0:
                 names.append(name if part == 1 else f"{name[:2]}({part:.2f}·{name[3]})")
@@ -238,7 +239,7 @@ class StepThroughPanel(Panel):
                 + "".join(f"<td style='padding:0 .6em'>{c}</td>" for c in cells) + "</tr></table>")
 
     def __repr__(self):
-        return f"<dhlab DH step-through: link {self.i}>"
+        return _("<dhlab DH step-through: link {i}>").format(i=self.i)
 
 
 def stepthrough(theta_deg: float = 0.0, d: float = 0.0, a: float = 0.0, alpha_deg: float = 0.0,
@@ -258,12 +259,13 @@ def stepthrough(theta_deg: float = 0.0, d: float = 0.0, a: float = 0.0, alpha_de
 def _radians(degrees, name: str) -> float:
     """An angle of a DH row typed in degrees (-360 … 360), in radians."""
     if has_angle_mark(degrees):      # deg2rad() made it radians already: converting again would be wrong
-        raise DHLabError(f"{name} = {describe(degrees)} is already in radians (made by deg2rad()), but {name} "
-                         f"is in degrees: write the plain number of degrees (e.g. {name}=90).")
+        raise DHLabError(_("{name} = {value} is already in radians (made by deg2rad()), but {name} is in degrees: "
+                           "write the plain number of degrees (e.g. {name}=90).").format(
+                               name=name, value=describe(degrees)))
     value = as_number(degrees, name)
     if abs(value) > 360:
-        raise DHLabError(f"{name} = {value:g}° is more than a full turn: {name} is in degrees, "
-                         "from -360 to 360 (720° is the same as 0°). Check the number.")
+        raise DHLabError(_("{name} = {value:g}° is more than a full turn: {name} is in degrees, from -360 to 360 "
+                           "(720° is the same as 0°). Check the number.").format(name=name, value=value))
     return math.radians(value)
 
 
@@ -275,7 +277,7 @@ def stepthrough_link(robot, i: int, q=None, *, step: float = 0.0, figsize=(6, 6)
     unless told otherwise. Use :meth:`StepThroughPanel.frame_at` to read a step
     without moving the slider."""
     checked_robot(robot)
-    i = as_index(i, "link number i", 1, robot.n)
+    i = as_index(i, _("link number i"), 1, robot.n)
     q = checked_start(robot, q)                          # one pose, inside the joint limits (as teach)
     frames = np.asarray(robot.frames(q), dtype=float)
     A = np.linalg.solve(frames[i - 1], frames[i])       # ^{i-1}A_i = inv(F_{i-1}) · F_i

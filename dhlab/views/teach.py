@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 import ipywidgets as widgets
 
+from ..i18n import _
 from ..transforms import rpy
 from ..validation import DHLabError, as_flag
 from .panel import Panel, checked_start, joint_sliders, q_to_slider, slider_to_q, view_controls
@@ -43,9 +44,9 @@ def pose_text(T, unit: str = "") -> str:
 
     def row(cells):
         return "<tr>" + "".join(f'<td style="{_CELL}">{c}</td>' for c in cells) + "</tr>"
-    return (f"<b>End effector</b> (<i>efector final</i>)<br>position [{unit or 'length'}], "
-            "roll-pitch-yaw [°]:"
-            '<table style="border-collapse:collapse;table-layout:fixed">'
+    return (_("<b>End effector</b> (<i>efector final</i>)<br>position [{unit}], roll-pitch-yaw [°]:").format(
+                unit=unit or _("length"))
+            + '<table style="border-collapse:collapse;table-layout:fixed">'
             + row([f"x = {x:.3f}", f"y = {y:.3f}", f"z = {z:.3f}"])
             + row([f"roll = {roll:.2f}", f"pitch = {pitch:.2f}", f"yaw = {yaw:.2f}"]) + "</table>")
 
@@ -77,7 +78,8 @@ class TeachPanel(Panel):
                  backend: str = "auto", controls: bool = True, **view_options):
         self.robot = checked_robot(robot)
         if on_change is not None and not callable(on_change):
-            raise DHLabError(f"on_change must be a function of q (or None), got {on_change!r:.60}.")
+            raise DHLabError(_("on_change must be a function of q (or None), got {value}.").format(
+                value=f"{on_change!r:.60}"))
         self.on_change = on_change
         controls = as_flag(controls, "controls")
         q = default_q(robot) if q is None else checked_start(robot, q)
@@ -89,7 +91,7 @@ class TeachPanel(Panel):
         self.matrix = widgets.HTML()
         extra = view_controls(self.view, run=lambda action, value: self.run(action, value)) \
             if controls else []
-        super().__init__(live, [widgets.HTML(f"<b>{robot.name}</b>: joints (<i>articulaciones</i>)"),
+        super().__init__(live, [widgets.HTML(_("<b>{name}</b>: joints (<i>articulaciones</i>)").format(name=robot.name)),
                                 *rows, self.readout, self.matrix, *extra])
         self._refresh()
         self.observe_values(self.sliders, self._refresh)
@@ -126,7 +128,7 @@ class TeachPanel(Panel):
         self.view.draw()                  # one draw per update
 
     def __repr__(self):
-        return f"<dhlab teach panel: {self.robot.name}, {self.robot.n} joints>"
+        return _("<dhlab teach panel: {name}, {n} joints>").format(name=self.robot.name, n=self.robot.n)
 
 
 def teach(robot, q=None, *, on_change=None, planar=None, figsize=None,

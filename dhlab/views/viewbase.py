@@ -10,6 +10,7 @@ from matplotlib.axes import Axes
 from matplotlib.colors import is_color_like
 from mpl_toolkits.mplot3d import Axes3D
 
+from ..i18n import _
 from ..validation import DHLabError, as_choice, as_flag, as_number, as_text, check_joint_values, describe
 from . import framing
 from .livefigure import LiveFigure
@@ -33,16 +34,16 @@ def checked_robot(robot):
     """``robot`` if it is a dhlab robot with finite joint limits a view can sample,
     else a DHLabError saying what is wrong."""
     if not all(hasattr(robot, name) for name in ("links", "frames", "n", "tool")):
-        raise DHLabError(f"expected a dhlab robot (dhlab.DHRobot or dhlab.Robot), got "
-                         f"{type(robot).__name__} {robot!r:.60}.")
+        raise DHLabError(_("expected a dhlab robot (dhlab.DHRobot or dhlab.Robot), got {type} {value}.").format(
+            type=type(robot).__name__, value=f"{robot!r:.60}"))
     if robot.n < 1:
-        raise DHLabError("the robot has no joints: nothing to move.")
+        raise DHLabError(_("the robot has no joints: nothing to move."))
     for j, link in enumerate(robot.links):
         lo, hi = (float(v) for v in link.qlim)
         if not (np.isfinite(lo) and np.isfinite(hi)) or max(abs(lo), abs(hi)) > MAX_LIMIT:
-            raise DHLabError(f"joint {j + 1}'s limits ({lo:g}, {hi:g}) are too wide to draw a slider "
-                             "or a workspace; give the robot finite limits, e.g. qlim=(0, 1) for a "
-                             "prismatic joint.")
+            raise DHLabError(_("joint {j}'s limits ({lo:g}, {hi:g}) are too wide to draw a slider or a workspace; "
+                               "give the robot finite limits, e.g. qlim=(0, 1) for a prismatic joint.").format(
+                                   j=j + 1, lo=lo, hi=hi))
     return robot
 
 
@@ -299,18 +300,19 @@ class RobotView:
     def _check_drawing_place(self, ax, live) -> None:
         """``live`` a LiveFigure, ``ax`` an Axes of this view's kind (3D or 2D), or None."""
         if live is not None and not isinstance(live, LiveFigure):
-            raise DHLabError(f"live must be a dhlab LiveFigure (or None), got {describe(live)}.")
+            raise DHLabError(_("live must be a dhlab LiveFigure (or None), got {value}.").format(value=describe(live)))
         three_d = self.projection == "3d"
         if ax is not None and (not isinstance(ax, Axes) or isinstance(ax, Axes3D) != three_d):
             kind = ("3D Axes, e.g. figure.add_subplot(projection='3d')" if three_d else
                     "2D Axes, e.g. figure.add_subplot() (or pass planar=False for a 3D view)")
-            raise DHLabError(f"ax must be a matplotlib {kind}; got {describe(ax)}.")
+            raise DHLabError(_("ax must be a matplotlib {kind}; got {value}.").format(kind=kind, value=describe(ax)))
 
     @staticmethod
     def _checked_zoom(zoom):
         zoom = as_number(zoom, "zoom")
         if not 0.2 <= zoom <= 5:
-            raise DHLabError(f"zoom must be between 0.2 and 5 (1: the robot fills its view), got {zoom:g}.")
+            raise DHLabError(_("zoom must be between 0.2 and 5 (1: the robot fills its view), got {zoom:g}.").format(
+                zoom=zoom))
         return zoom
 
     def _strokes(self, frames) -> np.ndarray:
@@ -361,14 +363,14 @@ class RobotView:
 
 def _checked_color(color):
     if not is_color_like(color):
-        raise DHLabError(f"color must be a matplotlib colour, e.g. 'tab:blue', '0.25' (grey) or (0.2, 0.4, 0.6); "
-                         f"got {describe(color)}.")
+        raise DHLabError(_("color must be a matplotlib colour, e.g. 'tab:blue', '0.25' (grey) or (0.2, 0.4, 0.6); "
+                           "got {value}.").format(value=describe(color)))
     return color
 
 
 def _checked_alpha(alpha) -> float:
     alpha = as_number(alpha, "alpha")
     if not 0 <= alpha <= 1:
-        raise DHLabError(f"alpha must be from 0 (invisible) to 1 (opaque), e.g. 0.45 for a faint robot; "
-                         f"got {alpha:g}.")
+        raise DHLabError(_("alpha must be from 0 (invisible) to 1 (opaque), e.g. 0.45 for a faint robot; got "
+                           "{alpha:g}.").format(alpha=alpha))
     return alpha

@@ -3,7 +3,7 @@
 For each notebook, in a cold browser (fresh context: empty cache and storage): open it in the
 built JupyterLite site, clear the stored outputs, run the cells from the top, and when the first
 slider appears, move it and check that its figure changes; then run the rest and compare every
-``# NBVAL_CHECK_OUTPUT`` cell's outputs with the stored ones (as nbval does, with
+``nbval-check-output`` cell's outputs with the stored ones (as nbval does, with
 notebooks/sanitize.cfg), and fail on any error output or any stderr the stored notebook does not
 have. A request for anything but the local site fails the test (conftest's ``visit``).
 
@@ -207,7 +207,7 @@ def test_notebook_in_the_browser(name, site, visit, measurements):
             problems.append(f"cell {index}: {errors[0]['ename']}: {errors[0]['evalue']}")
         if new_stderr:
             problems.append(f"cell {index} wrote to stderr: {''.join(new_stderr)[:300]!r}")
-        if "NBVAL_CHECK_OUTPUT" in cell["source"]:
+        if "nbval-check-output" in old.get("metadata", {}).get("tags", []):
             got, expected = driver.comparable(cell["outputs"], rules), driver.comparable(old["outputs"], rules)
             if got != expected:
                 problems.append(f"cell {index}: outputs differ from the stored ones\n  got:      {got}\n"

@@ -1,0 +1,165 @@
+"""Keeping the message catalogs up to date: ``python -m dhlab.i18n_catalog {extract,update,compile,check}``.
+
+The English messages live in the code, marked ``_("…")`` (translated where shown) or ``N_("…")``
+(a constant, translated later with ``_``). From them:
+
+* ``extract``  writes the template ``dhlab/locale/dhlab.pot`` (every marked message);
+* ``update``   merges the template into each ``dhlab/locale/<lang>/LC_MESSAGES/dhlab.po``: a new message
+  comes in untranslated, a changed one *fuzzy* (its old translation kept as a suggestion), a removed
+  one obsolete;
+* ``compile``  writes each ``dhlab.mo`` (what :mod:`dhlab.i18n` reads) from its ``.po``;
+* ``check``    lists every problem (a message of the code missing from a catalog, an entry untranslated,
+  fuzzy or obsolete, placeholders that differ, a ``.mo`` older than its ``.po``) and exits 1 if any.
+
+A contributor who changes an English message runs ``extract`` and ``update``, translates the entries
+the ``.po`` marks (untranslated or ``#, fuzzy``), then ``compile`` and ``check``.
+
+Babel (a development dependency) does the work; :mod:`dhlab.i18n` itself needs only the standard library.
+"""
+from __future__ import annotations
+
+import io
+import re
+import sys
+from pathlib import Path
+
+from .i18n import LANGUAGES, LOCALE_DIR
+
+PACKAGE = Path(__file__).parent
+DOMAIN = "dhlab"
+TEMPLATE = LOCALE_DIR / f"{DOMAIN}.pot"
+KEYWORDS = {"_": None, "N_": None}
+# the code whose messages are translated
+SOURCES = ["**/*.py"]   # every module: a message marked anywhere must be in the catalogs
+_PLACEHOLDER = re.compile(r"\{[^{}]*\}|%(?:\([^)]*\))?[-#0 +]*\d*(?:\.\d+)?[sdifgeEr%]")
+
+
+def po_path(language: str) -> Path:
+    return LOCALE_DIR / language / "LC_MESSAGES" / f"{DOMAIN}.po"
+
+
+def translated_languages() -> list:
+    """The languages that have a catalog: every course language but English, the source."""
+    return [lang for lang in LANGUAGES if lang != "en"]
+
+
+def source_files() -> list:
+    return sorted({p for pattern in SOURCES for p in PACKAGE.glob(pattern)})
+
+
+def extract_messages():
+    """The catalog of every message marked in :data:`SOURCES` (a Babel ``Catalog``)."""
+    from babel.messages.catalog import Catalog
+    from babel.messages.extract import extract_from_file
+
+    catalog = Catalog(project="dhlab", domain=DOMAIN, charset="utf-8")
+    for path in source_files():
+        rel = path.relative_to(PACKAGE.parent).as_posix()
+        for lineno, message, comments, context in extract_from_file(
+                "python", str(path), keywords=KEYWORDS, comment_tags=("TRANSLATORS:",),
+                strip_comment_tags=True):
+            catalog.add(message, locations=[(rel, lineno)], auto_comments=comments, context=context)
+    return catalog
+
+
+def _read(path: Path):
+    from babel.messages.pofile import read_po
+    with open(path, "rb") as f:
+        return read_po(f, charset="utf-8")
+
+
+def _write_po(catalog, path: Path, **options) -> None:
+    from babel.messages.pofile import write_po
+    buffer = io.BytesIO()
+    write_po(buffer, catalog, width=100, omit_header=False, **options)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_bytes(buffer.getvalue())
+
+
+def extract() -> None:
+    _write_po(extract_messages(), TEMPLATE, sort_output=True)
+
+
+def update() -> None:
+    template = _read(TEMPLATE)
+    for language in translated_languages():
+        path = po_path(language)
+        if path.exists():
+            catalog = _read(path)
+        else:
+            from babel.messages.catalog import Catalog
+            catalog = Catalog(locale=language, domain=DOMAIN, project="dhlab", charset="utf-8")
+        catalog.update(template, no_fuzzy_matching=False)
+        catalog.fuzzy = False                    # the header is ours, not a guess
+        catalog.last_translator = catalog.language_team = "dhlab course"
+        _write_po(catalog, path, sort_output=True, include_previous=True)
+
+
+def compile_catalogs() -> None:
+    from babel.messages.mofile import write_mo
+    for language in translated_languages():
+        buffer = io.BytesIO()
+        write_mo(buffer, _read(po_path(language)), use_fuzzy=False)
+        po_path(language).with_suffix(".mo").write_bytes(buffer.getvalue())
+
+
+def placeholders(text: str) -> list:
+    """The ``{name}`` and ``%s`` fields of a message, sorted (``{{``/``}}`` are literal braces)."""
+    return sorted(_PLACEHOLDER.findall(text.replace("{{", "").replace("}}", "")))
+
+
+def problems() -> list:
+    """Everything that keeps the catalogs from matching the code, one line each."""
+    found = []
+    wanted = {m.id for m in extract_messages() if m.id}
+    for language in translated_languages():
+        path = po_path(language)
+        if not path.exists():
+            found.append(f"{path}: missing")
+            continue
+        catalog = _read(path)
+        have = {m.id for m in catalog if m.id}
+        found += [f"{language}: not in the catalog: {m!r}" for m in sorted(wanted - have)]
+        found += [f"{language}: obsolete: {m!r}" for m in sorted(catalog.obsolete)]
+        for m in catalog:
+            if not m.id:
+                continue
+            if m.fuzzy:
+                found.append(f"{language}: fuzzy: {m.id!r}")
+            elif not m.string:
+                found.append(f"{language}: untranslated: {m.id!r}")
+            elif placeholders(m.id) != placeholders(m.string):
+                found.append(f"{language}: placeholders differ: {m.id!r} -> {m.string!r}")
+            if m.id not in wanted:
+                found.append(f"{language}: in the catalog but not in the code: {m.id!r}")
+        found += _mo_problems(language, catalog)
+    return found
+
+
+def _mo_problems(language, catalog) -> list:
+    import gettext
+    mo = po_path(language).with_suffix(".mo")
+    if not mo.exists():
+        return [f"{mo}: missing: run compile"]
+    with open(mo, "rb") as f:
+        compiled = gettext.GNUTranslations(f)
+    stale = [m.id for m in catalog if m.id and m.string and not m.fuzzy and compiled.gettext(m.id) != m.string]
+    return [f"{mo}: does not match its .po ({len(stale)} messages): run compile"] if stale else []
+
+
+def main(argv=None) -> int:
+    commands = {"extract": extract, "update": update, "compile": compile_catalogs}
+    args = sys.argv[1:] if argv is None else argv
+    if len(args) != 1 or args[0] not in (*commands, "check"):
+        print(__doc__.split("\n\n")[0] + "\n\nusage: python -m dhlab.i18n_catalog {extract,update,compile,check}")
+        return 2
+    if args[0] != "check":
+        commands[args[0]]()
+        return 0
+    found = problems()
+    print("\n".join(found) if found else "the catalogs match the code")
+    return 1 if found else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
