@@ -41,6 +41,18 @@ def test_the_deck_rules_hold(lecture):
                       + "\n".join(found[:25])
 
 
+@pytest.mark.parametrize("stem", deck_rules.LECTURE_NOTEBOOKS)
+def test_the_spanish_decks_keep_the_rules_too(stem):
+    """The Spanish edition is lectured from as well: its translations (longer than the English,
+    as Spanish is) must still fit a screen."""
+    path = NOTEBOOKS / "es" / f"{stem}.ipynb"
+    if not path.exists():
+        pytest.skip(f"no Spanish edition of {stem} yet")
+    found = deck_rules.problems(json.loads(path.read_text(encoding="utf-8")))
+    assert not found, f"es/{stem}: {len(found)} problems (python tests/deck_rules.py notebooks/es/{stem}.ipynb):\n" \
+                      + "\n".join(found[:25])
+
+
 def test_no_cell_is_lost_by_the_presenting_tool(lecture):
     """jupyterlab-slideshow 0.3.4 reads ``slide_type or null`` and knows only null, slide,
     subslide, fragment, skip and notes: a cell marked with the string "-" is never shown in the

@@ -106,7 +106,7 @@ def test_setup_is_hidden_sets_the_language_and_defines_no_helper():
     assert _kind(setup) == "skip" and setup["metadata"]["jupyter"]["source_hidden"]
     lines = source.splitlines()
     assert lines[lines.index("import dhlab") + 1] == 'dhlab.set_language("en")'
-    shown = "".join("".join(c["source"]) for c in cells if c["cell_type"] == "code" and _kind(c) != "skip")
+    shown = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code" and _kind(c) != "skip")
     # the one function on screen is the lesson itself: the seed's product of the 14 factors
     assert re.findall(r"^\s*(?:def|class) (\w+)", shown, re.M) == ["fourteen_factors"], "helper code on a slide"
 

@@ -36,7 +36,7 @@ def cases_figure(z_prev, examples):
     """One 3D panel per case: ``z_prev`` = (point, direction) of z_(i−1); ``examples`` =
     {name: (point, direction) of z_i}. Draws z_(i−1) (solid blue), z_i (dashed blue), the common
     normal (black) with its length, x_i (red arrow) and O_i (black dot), all labelled."""
-    fig = new_figure((11, 4.4), layout=None)
+    fig = new_figure((11, 4.0), layout=None)          # 4.0 in tall: with its table, one 1080 p slide
     fig.subplots_adjust(left=0.0, right=1.0, bottom=0.0, top=0.9, wspace=0.0)
     a = Line(*z_prev)
     for k, (name, (p, u)) in enumerate(examples.items(), start=1):
