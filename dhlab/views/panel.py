@@ -22,6 +22,7 @@ import traceback
 import ipywidgets as widgets
 import numpy as np
 
+from ..i18n import _
 from ..validation import DHLabError
 from .livefigure import LiveFigure, forget_previous_run
 from .view import one_pose
@@ -47,7 +48,7 @@ def unit_of(robot, link) -> str:
     """The display unit of a joint: '°' for revolute, the robot's length unit for prismatic."""
     if link.is_revolute:
         return "°"
-    return getattr(robot, "unit", "") or "length"
+    return getattr(robot, "unit", "") or _("length")
 
 
 def q_to_slider(link, value: float) -> float:
@@ -69,9 +70,9 @@ def checked_start(robot, q) -> np.ndarray:
         lo, hi = link.qlim
         if not lo - 1e-12 <= value <= hi + 1e-12:
             shown = [f"{q_to_slider(link, v):g}{unit_of(robot, link)}" for v in (value, lo, hi)]
-            raise DHLabError(f"q[{j}] = {shown[0]} is outside joint {j + 1}'s limits "
-                             f"[{shown[1]}, {shown[2]}]; start inside them (revolute values in "
-                             "radians: use dhlab.deg2rad(...) for degrees).")
+            raise DHLabError(_("q[{j}] = {value} is outside joint {joint}'s limits [{lo}, {hi}]; start inside "
+                               "them (revolute values in radians: use dhlab.deg2rad(...) for degrees).").format(
+                j=j, value=shown[0], joint=j + 1, lo=shown[1], hi=shown[2]))
     return q
 
 
@@ -88,7 +89,7 @@ def joint_sliders(robot, q, labels=None):
             value=float(np.clip(q_to_slider(link, value), lo, hi)), min=lo, max=hi, step=step,
             description=label, continuous_update=True,
             readout_format=".1f" if link.is_revolute else ".3f",
-            tooltip=f"{label}: {'revolute, degrees' if link.is_revolute else 'prismatic, length'}",
+            tooltip="{}: {}".format(label, _("revolute, degrees") if link.is_revolute else _("prismatic, length")),
             style={"description_width": "3em"}, layout=widgets.Layout(width=control_width(SLIDER_PX)))
         sliders.append(slider)
         rows.append(widgets.HBox([slider, widgets.Label(unit_of(robot, link))]))
@@ -108,26 +109,26 @@ def view_controls(view, run=None) -> list:
     rows = []
     if view.projection == "3d":
         camera = widgets.ToggleButtons(options=["iso", "front", "side", "top"], value=view.camera,
-                                       description="view", tooltips=[
-                                           "oblique: every triad reads", "looking along +y",
-                                           "looking along -x", "looking down -z"],
+                                       description=_("view"), tooltips=[
+                                           _("oblique: every triad reads"), _("looking along +y"),
+                                           _("looking along -x"), _("looking down -z")],
                                        style={"description_width": "3em", "button_width": "4.2em"})
         camera.observe(changed(view.set_camera), names="value")
         rows.append(camera)
-    zoom = widgets.FloatSlider(value=view.zoom, min=0.5, max=3.0, step=0.05, description="zoom",
+    zoom = widgets.FloatSlider(value=view.zoom, min=0.5, max=3.0, step=0.05, description=_("zoom"),
                                readout_format=".2f", continuous_update=False,
                                style={"description_width": "3em"}, layout=widgets.Layout(width=control_width(SLIDER_PX)))
     zoom.observe(changed(view.set_zoom), names="value")
     rows.append(zoom)
     toggles = []
     if view.labels is not None:
-        labels = widgets.Checkbox(value=view.labels.get_visible(), description="frame labels",
+        labels = widgets.Checkbox(value=view.labels.get_visible(), description=_("frame labels"),
                                   indent=False, layout=widgets.Layout(width="auto"))
         labels.observe(changed(view.show_labels), names="value")
         toggles.append(labels)
     if getattr(view, "joint_axes_line", None) is not None:
         axes = widgets.Checkbox(value=view.joint_axes_line.get_visible(), indent=False,
-                                description="joint axes (z of each joint)",
+                                description=_("joint axes (z of each joint)"),
                                 layout=widgets.Layout(width="auto"))
         axes.observe(changed(view.show_joint_axes), names="value")
         toggles.append(axes)
