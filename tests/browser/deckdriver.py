@@ -214,23 +214,12 @@ def settled_pixels(page, figure, timeout: float = 20.0):
 
 def move_slider_in_deck(page, output) -> float:
     """Keys on the panel's first slider, inside the deck; the fraction of the figure's pixels changed."""
-    from labdriver import changed_fraction
+    from labdriver import changed_fraction, keys_until_changed
 
     figure = output.locator(FIGURE_SELECTOR).first
     before = settled_pixels(page, figure)
     handle = output.locator(".widget-slider .noUi-handle").first
-    changed = 0.0
-    # a slider at its maximum only moves left; a step-through whose first motion is null (θ = 0)
-    # changes nothing until the next motion: End takes it to the last one
-    for key, presses in (("ArrowRight", 12), ("ArrowLeft", 12), ("End", 1)):
-        handle.focus()
-        for _ in range(presses):
-            page.keyboard.press(key)
-        time.sleep(0.3)
-        changed = changed_fraction(before, settled_pixels(page, figure))
-        if changed >= MIN_CHANGED:
-            break
-    return changed
+    return keys_until_changed(page, handle, lambda: changed_fraction(before, settled_pixels(page, figure)))
 
 
 def drag_slider_in_deck(page, output) -> float:

@@ -284,6 +284,27 @@ def changed_fraction(before: np.ndarray, after: np.ndarray) -> float:
 
 # --- pictures ----------------------------------------------------------------------
 
+
+MIN_CHANGED = 0.0005           # a moved slider must change at least this fraction of the figure's pixels
+
+
+def keys_until_changed(page, handle, changed) -> float:
+    """Arrow keys on a slider's ``handle`` until ``changed()`` (the fraction of the figure's pixels
+    changed since the start) reaches :data:`MIN_CHANGED`; that fraction. A slider at its maximum
+    only moves left; a step-through whose first motion is null (θ = 0) changes nothing until the
+    next motion: End takes it to the last one."""
+    fraction = 0.0
+    for key, presses in (("ArrowRight", 12), ("ArrowLeft", 12), ("End", 1)):
+        handle.focus()
+        for _ in range(presses):
+            page.keyboard.press(key)
+        time.sleep(0.3)
+        fraction = changed()
+        if fraction >= MIN_CHANGED:
+            break
+    return fraction
+
+
 def full_page_screenshot(page, path: Path, max_height: int = 30_000) -> Path:
     """The whole notebook in one picture (PNG; JPEG for a ``.jpg`` path, though a
     page of text is smaller as PNG): the window is made as tall as the notebook
@@ -305,3 +326,15 @@ def full_page_screenshot(page, path: Path, max_height: int = 30_000) -> Path:
     finally:
         page.set_viewport_size(size)
     return path
+
+
+def move_first_slider(page, output) -> tuple:
+    """Arrow keys on the first slider of a panel; (fraction of the figure's pixels
+    that changed, what the page showed wrong or '')."""
+    figure = output.locator(FIGURE_SELECTOR).first
+    figure.scroll_into_view_if_needed()
+    before = settled(figure, pause=0.2)
+    handle = output.locator(".widget-slider .noUi-handle").first
+    changed = keys_until_changed(page, handle, lambda: changed_fraction(before, settled(figure, pause=0.2)))
+    errors = output.locator(".widget-html", has_text="Error while updating")
+    return changed, (errors.first.inner_text()[:300] if errors.count() else "")

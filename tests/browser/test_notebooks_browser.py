@@ -26,13 +26,12 @@ from pathlib import Path
 
 import pytest
 
-from labdriver import (FIGURE_SELECTOR, changed_fraction, close_notebook, full_page_screenshot,
-                       open_notebook, outputs_report, panels, problems, run_all, settled, with_backend)
+from labdriver import (MIN_CHANGED, close_notebook, full_page_screenshot, open_notebook, outputs_report,
+                       panels, problems, run_all, with_backend, move_first_slider)
 
 HERE = Path(__file__).resolve().parent
 NOTEBOOKS = sorted((HERE.parents[1] / "notebooks").glob("*.ipynb"))
 BACKENDS = ["inline", "widget"]
-MIN_CHANGED = 0.0005           # a moved slider must change at least this fraction of the figure's pixels
 
 
 @pytest.fixture(scope="session")
@@ -45,28 +44,6 @@ def notebook_folders(lab_root):
         if images is not None and images.is_dir() and not (folder / "images").exists():
             shutil.copytree(images, folder / "images")
     return lab_root
-
-
-def move_first_slider(page, output) -> tuple:
-    """Arrow keys on the first slider of a panel; (fraction of the figure's pixels
-    that changed, what the page showed wrong or '')."""
-    figure = output.locator(FIGURE_SELECTOR).first
-    figure.scroll_into_view_if_needed()
-    before = settled(figure, pause=0.2)
-    handle = output.locator(".widget-slider .noUi-handle").first
-    changed = 0.0
-    # a slider at its maximum only moves left; a step-through whose first motion is null (θ = 0)
-    # changes nothing until the next motion: End takes it to the last one
-    for key, presses in (("ArrowRight", 12), ("ArrowLeft", 12), ("End", 1)):
-        handle.focus()
-        for _ in range(presses):
-            page.keyboard.press(key)
-        time.sleep(0.3)
-        changed = changed_fraction(before, settled(figure, pause=0.2))
-        if changed >= MIN_CHANGED:
-            break
-    errors = output.locator(".widget-html", has_text="Error while updating")
-    return changed, (errors.first.inner_text()[:300] if errors.count() else "")
 
 
 def check_notebook(page, relative_path: str, name: str, results_dir: Path) -> list:

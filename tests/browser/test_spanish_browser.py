@@ -17,19 +17,17 @@ from __future__ import annotations
 
 import json
 import shutil
-import time
 from pathlib import Path
 
 import nbformat
 import pytest
 
-from labdriver import (FIGURE_SELECTOR, NOTEBOOK_JS, changed_fraction, close_notebook, full_page_screenshot,
-                       open_notebook, outputs_report, panels, problems, run_all, settled, with_backend)
+from labdriver import (MIN_CHANGED, NOTEBOOK_JS, close_notebook, full_page_screenshot, open_notebook,
+                       outputs_report, panels, problems, run_all, with_backend, move_first_slider)
 
 ROOT = Path(__file__).resolve().parents[2]
 SPANISH = ROOT / "notebooks" / "es"
 NO_PANEL = {"09_sources_and_errata"}          # the sources and errata: text and three printed computations
-MIN_CHANGED = 0.0005
 
 
 def spanish_notebook():
@@ -59,24 +57,6 @@ def kernel_language(page) -> str:
         await future.done;
         return text;
     }}""")
-
-
-def move_first_slider(page, output) -> tuple:
-    figure = output.locator(FIGURE_SELECTOR).first
-    figure.scroll_into_view_if_needed()
-    before = settled(figure, pause=0.2)
-    handle = output.locator(".widget-slider .noUi-handle").first
-    changed = 0.0
-    for key, presses in (("ArrowRight", 12), ("ArrowLeft", 12), ("End", 1)):
-        handle.focus()
-        for _ in range(presses):
-            page.keyboard.press(key)
-        time.sleep(0.3)
-        changed = changed_fraction(before, settled(figure, pause=0.2))
-        if changed >= MIN_CHANGED:
-            break
-    errors = output.locator(".widget-html", has_text="Error while updating")
-    return changed, (errors.first.inner_text()[:300] if errors.count() else "")
 
 
 def test_a_spanish_notebook_runs_and_its_panel_moves(lab_page, lab_root, results_dir):
