@@ -21,8 +21,8 @@ import numpy as np
 from ..dh import DHRobot
 from ..i18n import N_, _
 from ..lines import Line, closest_points, relation
-from ..transforms import dh_matrix
-from ..validation import DHLabError, as_float_array, as_matrix4, rigid_problem
+from ..transforms import check_rigid, dh_matrix
+from ..validation import DHLabError, as_float_array
 
 __all__ = ["fmt", "three_cases", "XPlacement", "place_x", "measured_row", "measured_rows_agree",
            "prismatic_a_lines"]
@@ -84,15 +84,6 @@ def place_x(z_prev, z_i) -> XPlacement:
     return XPlacement(rel.kind, CASES[rel.kind], H, origin, rel.distance, rel.normal)
 
 
-def _frame(S, name: str) -> np.ndarray:
-    S = as_matrix4(S, name)
-    problem = rigid_problem(S)
-    if problem:
-        raise DHLabError(_("measured_row: {name} is not a frame (a rigid 4x4 homogeneous matrix): {problem}").format(
-            name=name, problem=problem))
-    return S
-
-
 def measured_row(S_prev, S_next):
     """(θ, d, a, α) between frames {S_(i−1)} = ``S_prev`` and {S_i} = ``S_next`` (4×4, in the world),
     measured by seed 002's four sentences, radians and lengths:
@@ -102,7 +93,7 @@ def measured_row(S_prev, S_next):
     * a: along x_i, from H to O_i;
     * α: the angle from z_(i−1) to z_i, seen along x_i (right-hand rule about x_i).
     """
-    S_prev, S_next = _frame(S_prev, "S_prev"), _frame(S_next, "S_next")
+    S_prev, S_next = check_rigid(S_prev, "measured_row: S_prev"), check_rigid(S_next, "measured_row: S_next")
     O0, x0, z0 = S_prev[:3, 3], S_prev[:3, 0], S_prev[:3, 2]
     O1, x1, z1 = S_next[:3, 3], S_next[:3, 0], S_next[:3, 2]
     theta = np.arctan2(np.cross(x0, x1) @ z0, x0 @ x1)      # from x_(i-1) to x_i, seen along z_(i-1)
