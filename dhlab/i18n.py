@@ -4,7 +4,7 @@ The course never guesses the language from the machine's locale: a notebook
 says ``dhlab.set_language("es")`` in its first cell, and the grader and the
 release read the ``DHLAB_LANGUAGE`` environment variable (or their
 ``--language`` option). Messages are looked up in gettext catalogs
-(``dhlab/locale/<lang>/LC_MESSAGES/dhlab.mo``, compiled from the ``.po`` files
+(``dhlab/locale/<lang>/LC_MESSAGES/<domain>.mo``, compiled from the ``.po`` files
 beside them, and kept up to date by ``python -m dhlab.i18n_catalog``); a message
 without a translation is shown in English.
 
@@ -33,7 +33,10 @@ _catalogs: dict[str, gettext.NullTranslations] = {}
 
 def _catalog(language: str) -> gettext.NullTranslations:
     if language not in _catalogs:
-        _catalogs[language] = gettext.translation("dhlab", LOCALE_DIR, languages=[language], fallback=True)
+        # the lessons' domain first, then the grader's (see dhlab.i18n_catalog.DOMAINS)
+        catalog = gettext.translation("dhlab", LOCALE_DIR, languages=[language], fallback=True)
+        catalog.add_fallback(gettext.translation("dhlab_grading", LOCALE_DIR, languages=[language], fallback=True))
+        _catalogs[language] = catalog
     return _catalogs[language]
 
 

@@ -3,13 +3,17 @@
 The English messages live in the code, marked ``_("…")`` (translated where shown) or ``N_("…")``
 (a constant, translated later with ``_``). From them:
 
-* ``extract``  writes the template ``dhlab/locale/dhlab.pot`` (every marked message);
-* ``update``   merges the template into each ``dhlab/locale/<lang>/LC_MESSAGES/dhlab.po``: a new message
+* ``extract``  writes a template ``dhlab/locale/<domain>.pot`` per domain (every marked message);
+* ``update``   merges each template into ``dhlab/locale/<lang>/LC_MESSAGES/<domain>.po``: a new message
   comes in untranslated, a changed one *fuzzy* (its old translation kept as a suggestion), a removed
   one obsolete;
-* ``compile``  writes each ``dhlab.mo`` (what :mod:`dhlab.i18n` reads) from its ``.po``;
+* ``compile``  writes each ``<domain>.mo`` (what :mod:`dhlab.i18n` reads) from its ``.po``;
 * ``check``    lists every problem (a message of the code missing from a catalog, an entry untranslated,
   fuzzy or obsolete, placeholders that differ, a ``.mo`` older than its ``.po``) and exits 1 if any.
+
+Two domains, two audiences: ``dhlab`` (the lessons, panels, exercises and the assignment's checks: what a
+student reads while working) and ``dhlab_grading`` (the grader's and the release tool's messages:
+feedback files, statuses, the teacher's command line: :data:`DOMAINS` says which modules).
 
 A contributor who changes an English message runs ``extract`` and ``update``, translates the entries
 the ``.po`` marks (untranslated or ``#, fuzzy``), then ``compile`` and ``check``.
@@ -26,16 +30,22 @@ from pathlib import Path
 from .i18n import LANGUAGES, LOCALE_DIR
 
 PACKAGE = Path(__file__).parent
-DOMAIN = "dhlab"
-TEMPLATE = LOCALE_DIR / f"{DOMAIN}.pot"
 KEYWORDS = {"_": None, "N_": None}
-# the code whose messages are translated
-SOURCES = ["**/*.py"]   # every module: a message marked anywhere must be in the catalogs
+# domain -> the modules whose messages it holds (a module belongs to the first domain that names it;
+# "**/*.py" takes the rest: a message marked anywhere must be in a catalog)
+DOMAINS = {"dhlab_grading": ["grading/**/*.py", "assign/**/*.py"],
+           "dhlab": ["**/*.py"]}
+DOMAIN = "dhlab"                     # the default domain of the functions below
+TEMPLATE = LOCALE_DIR / f"{DOMAIN}.pot"
 _PLACEHOLDER = re.compile(r"\{[^{}]*\}|%(?:\([^)]*\))?[-#0 +]*\d*(?:\.\d+)?[sdifgeEr%]")
 
 
-def po_path(language: str) -> Path:
-    return LOCALE_DIR / language / "LC_MESSAGES" / f"{DOMAIN}.po"
+def po_path(language: str, domain: str = DOMAIN) -> Path:
+    return LOCALE_DIR / language / "LC_MESSAGES" / f"{domain}.po"
+
+
+def template_path(domain: str = DOMAIN) -> Path:
+    return LOCALE_DIR / f"{domain}.pot"
 
 
 def translated_languages() -> list:
@@ -43,17 +53,22 @@ def translated_languages() -> list:
     return [lang for lang in LANGUAGES if lang != "en"]
 
 
-def source_files() -> list:
-    return sorted({p for pattern in SOURCES for p in PACKAGE.glob(pattern)})
+def source_files(domain: str = DOMAIN) -> list:
+    """The modules whose messages go to ``domain`` (see :data:`DOMAINS`)."""
+    taken, files = set(), {}
+    for name, patterns in DOMAINS.items():
+        files[name] = sorted({p for pattern in patterns for p in PACKAGE.glob(pattern)} - taken)
+        taken |= set(files[name])
+    return files[domain]
 
 
-def extract_messages():
-    """The catalog of every message marked in :data:`SOURCES` (a Babel ``Catalog``)."""
+def extract_messages(domain: str = DOMAIN):
+    """The catalog of every message marked in ``domain``'s modules (a Babel ``Catalog``)."""
     from babel.messages.catalog import Catalog
     from babel.messages.extract import extract_from_file
 
-    catalog = Catalog(project="dhlab", domain=DOMAIN, charset="utf-8")
-    for path in source_files():
+    catalog = Catalog(project="dhlab", domain=domain, charset="utf-8")
+    for path in source_files(domain):
         rel = path.relative_to(PACKAGE.parent).as_posix()
         for lineno, message, comments, context in extract_from_file(
                 "python", str(path), keywords=KEYWORDS, comment_tags=("TRANSLATORS:",),
@@ -77,30 +92,33 @@ def _write_po(catalog, path: Path, **options) -> None:
 
 
 def extract() -> None:
-    _write_po(extract_messages(), TEMPLATE, sort_output=True)
+    for domain in DOMAINS:
+        _write_po(extract_messages(domain), template_path(domain), sort_output=True)
 
 
 def update() -> None:
-    template = _read(TEMPLATE)
-    for language in translated_languages():
-        path = po_path(language)
-        if path.exists():
-            catalog = _read(path)
-        else:
-            from babel.messages.catalog import Catalog
-            catalog = Catalog(locale=language, domain=DOMAIN, project="dhlab", charset="utf-8")
-        catalog.update(template, no_fuzzy_matching=False)
-        catalog.fuzzy = False                    # the header is ours, not a guess
-        catalog.last_translator = catalog.language_team = "dhlab course"
-        _write_po(catalog, path, sort_output=True, include_previous=True)
+    for domain in DOMAINS:
+        template = _read(template_path(domain))
+        for language in translated_languages():
+            path = po_path(language, domain)
+            if path.exists():
+                catalog = _read(path)
+            else:
+                from babel.messages.catalog import Catalog
+                catalog = Catalog(locale=language, domain=domain, project="dhlab", charset="utf-8")
+            catalog.update(template, no_fuzzy_matching=False)
+            catalog.fuzzy = False                    # the header is ours, not a guess
+            catalog.last_translator = catalog.language_team = "dhlab course"
+            _write_po(catalog, path, sort_output=True, include_previous=True)
 
 
 def compile_catalogs() -> None:
     from babel.messages.mofile import write_mo
-    for language in translated_languages():
-        buffer = io.BytesIO()
-        write_mo(buffer, _read(po_path(language)), use_fuzzy=False)
-        po_path(language).with_suffix(".mo").write_bytes(buffer.getvalue())
+    for domain in DOMAINS:
+        for language in translated_languages():
+            buffer = io.BytesIO()
+            write_mo(buffer, _read(po_path(language, domain)), use_fuzzy=False)
+            po_path(language, domain).with_suffix(".mo").write_bytes(buffer.getvalue())
 
 
 def placeholders(text: str) -> list:
@@ -110,10 +128,14 @@ def placeholders(text: str) -> list:
 
 def problems() -> list:
     """Everything that keeps the catalogs from matching the code, one line each."""
+    return [line for domain in DOMAINS for line in _domain_problems(domain)]
+
+
+def _domain_problems(domain: str) -> list:
     found = []
-    wanted = {m.id for m in extract_messages() if m.id}
+    wanted = {m.id for m in extract_messages(domain) if m.id}
     for language in translated_languages():
-        path = po_path(language)
+        path = po_path(language, domain)
         if not path.exists():
             found.append(f"{path}: missing")
             continue
@@ -132,13 +154,12 @@ def problems() -> list:
                 found.append(f"{language}: placeholders differ: {m.id!r} -> {m.string!r}")
             if m.id not in wanted:
                 found.append(f"{language}: in the catalog but not in the code: {m.id!r}")
-        found += _mo_problems(language, catalog)
+        found += _mo_problems(path.with_suffix(".mo"), catalog)
     return found
 
 
-def _mo_problems(language, catalog) -> list:
+def _mo_problems(mo: Path, catalog) -> list:
     import gettext
-    mo = po_path(language).with_suffix(".mo")
     if not mo.exists():
         return [f"{mo}: missing: run compile"]
     with open(mo, "rb") as f:

@@ -77,14 +77,33 @@ def test_the_check_command_reports_a_missing_translation(tmp_path, monkeypatch):
     """The check fails on an English message the catalog does not have (as after an edit)."""
     real = i18n_catalog.extract_messages
 
-    def with_a_new_message():
-        catalog = real()
+    def with_a_new_message(domain=i18n_catalog.DOMAIN):
+        catalog = real(domain)
         catalog.add("a sentence nobody translated yet", locations=[("dhlab/x.py", 1)])
         return catalog
     monkeypatch.setattr(i18n_catalog, "extract_messages", with_a_new_message)
     found = i18n_catalog.problems()
     assert any("a sentence nobody translated yet" in p for p in found)
     assert i18n_catalog.main(["check"]) == 1
+
+
+def test_every_module_belongs_to_exactly_one_domain():
+    """The grader's modules go to its own catalog, every other module to the lessons' one."""
+    files = {d: set(i18n_catalog.source_files(d)) for d in i18n_catalog.DOMAINS}
+    assert not files["dhlab"] & files["dhlab_grading"]
+    every = set((ROOT / "dhlab").rglob("*.py"))
+    assert files["dhlab"] | files["dhlab_grading"] == every
+    assert ROOT / "dhlab" / "grading" / "cli.py" in files["dhlab_grading"]
+    assert ROOT / "dhlab" / "assign" / "report.py" in files["dhlab_grading"]
+
+
+def test_a_grader_message_is_found_through_the_lessons_catalog():
+    """``_`` looks in the lessons' catalog, then the grader's: one function for both."""
+    import gettext
+    from dhlab import i18n
+    es = i18n._catalog("es")
+    assert isinstance(es, gettext.GNUTranslations)
+    assert (i18n_catalog.po_path("es", "dhlab_grading").with_suffix(".mo")).exists()
 
 
 def test_underscore_is_never_rebound_where_it_translates():
