@@ -309,7 +309,8 @@ class Robot:
 
     def __repr__(self):
         kinds = "".join("R" if l.is_revolute else "P" for l in self.links)
-        return f"<{type(self).__name__} {self.name!r}: {self.n} joints ({kinds})>"
+        return _("<{type} {name!r}: {n} joints ({kinds})>").format(
+            type=type(self).__name__, name=self.name, n=self.n, kinds=kinds)
 
     # --- numeric kinematics ------------------------------------------------------
     def _q(self, q):

@@ -18,11 +18,16 @@ feedback files, statuses, the teacher's command line: :data:`DOMAINS` says which
 A contributor who changes an English message runs ``extract`` and ``update``, translates the entries
 the ``.po`` marks (untranslated or ``#, fuzzy``), then ``compile`` and ``check``.
 
+The lessons' notebooks mark their printed words the same way (``print(_("same table:"), ok)``):
+the ``dhlab`` domain also holds every ``_("…")`` of the English notebooks' code cells
+(:data:`NOTEBOOKS`; the Spanish notebooks share that code), located as ``notebooks/<nb>.ipynb#<cell id>:<line>``.
+
 Babel (a development dependency) does the work; :mod:`dhlab.i18n` itself needs only the standard library.
 """
 from __future__ import annotations
 
 import io
+import json
 import re
 import sys
 from pathlib import Path
@@ -36,6 +41,11 @@ KEYWORDS = {"_": None, "N_": None}
 DOMAINS = {"dhlab_grading": ["grading/**/*.py", "assign/**/*.py"],
            "dhlab": ["**/*.py"]}
 DOMAIN = "dhlab"                     # the default domain of the functions below
+# the English lesson notebooks whose code cells hold messages of the dhlab domain (not the course home, not
+# 08: the assignment's code is the grader's; not notebooks/es/: the same code)
+NOTEBOOK_DIR = PACKAGE.parent / "notebooks"
+NOTEBOOKS = "[0-9][0-9]_*.ipynb"
+NOT_NOTEBOOKS = {"08_puma_assignment.ipynb"}
 TEMPLATE = LOCALE_DIR / f"{DOMAIN}.pot"
 _PLACEHOLDER = re.compile(r"\{[^{}]*\}|%(?:\([^)]*\))?[-#0 +]*\d*(?:\.\d+)?[sdifgeEr%]")
 
@@ -74,7 +84,40 @@ def extract_messages(domain: str = DOMAIN):
                 "python", str(path), keywords=KEYWORDS, comment_tags=("TRANSLATORS:",),
                 strip_comment_tags=True):
             catalog.add(message, locations=[(rel, lineno)], auto_comments=comments, context=context)
+    if domain == DOMAIN:
+        for location, lineno, message, comments, context in notebook_messages():
+            catalog.add(message, locations=[(location, lineno)], auto_comments=comments, context=context)
     return catalog
+
+
+def notebook_paths() -> list:
+    """The English lesson notebooks whose code cells may hold messages (see :data:`NOTEBOOKS`)."""
+    return [p for p in sorted(NOTEBOOK_DIR.glob(NOTEBOOKS)) if p.name not in NOT_NOTEBOOKS]
+
+
+def cell_python(source: str) -> str:
+    """A code cell's source as plain Python: IPython's ``%magic`` and ``!shell`` lines blanked
+    (kept as empty lines, so line numbers stay those of the cell)."""
+    return "\n".join("" if line.lstrip().startswith(("%", "!")) else line for line in source.split("\n"))
+
+
+def notebook_messages():
+    """``(location, line, message, comments, context)`` for every ``_("…")`` in the notebooks' code cells;
+    the location names the notebook and the cell by its id (cells move, ids stay), the line is the cell's:
+    ``notebooks/02_homogeneous_matrices.ipynb#nb02-09`` and 5 (a .po file writes ``…#nb02-09:5``; Babel's
+    reader drops a location whose part after the last ``:`` is not a line number, hence not ``…ipynb:nb02-09``)."""
+    from babel.messages.extract import extract
+
+    for path in notebook_paths():
+        rel = path.relative_to(PACKAGE.parent).as_posix()
+        for cell in json.loads(path.read_text(encoding="utf-8"))["cells"]:
+            if cell["cell_type"] != "code":
+                continue
+            source = "".join(cell["source"]) if isinstance(cell["source"], list) else cell["source"]
+            found = extract("python", io.BytesIO(cell_python(source).encode("utf-8")), keywords=KEYWORDS,
+                            comment_tags=("TRANSLATORS:",), strip_comment_tags=True)
+            for lineno, message, comments, context in found:
+                yield f"{rel}#{cell.get('id', '')}", lineno, message, comments, context
 
 
 def _read(path: Path):

@@ -12,9 +12,9 @@ Every piece is pinned and checked, and nothing in the finished site points outsi
 * The release's compiled wheels (numpy, matplotlib, ...) come from ``../shared/pyodide-0.27.7``
   (or ``$DHLAB_PYODIDE_WHEELS``), or else from the release's CDN when it is reachable; each is
   checked against the sha256 that npm's ``pyodide-lock.json`` records for it.
-* The pure wheels sympy, mpmath, comm, ipywidgets and ipympl come from PyPI (lite/site-wheels.txt,
+* The pure wheels sympy, mpmath, comm, ipywidgets, ipympl and anywidget come from PyPI (lite/site-wheels.txt,
   hash-pinned); dhlab's own wheel is built from this checkout.
-* The JupyterLab extensions installed in the build venv are built in: ipywidgets', ipympl's and
+* The JupyterLab extensions installed in the build venv are built in: ipywidgets', ipympl's, anywidget's and
   jupyterlab-slideshow's (the lecture decks, offline), and the Spanish language pack
   (lite/requirements.txt); the site also carries notebooks/es/ (the Spanish edition) and
   notebooks/lecture_plans/ in folders of the same names.
@@ -39,7 +39,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 LITE = ROOT / "lite"
-BUILD = ROOT / "build"
+BUILD = Path(os.environ.get("DHLAB_LITE_BUILD", ROOT / "build"))   # another folder: a build of one's own
 CACHE = BUILD / "lite-cache"
 STAGE = BUILD / "lite-stage"          # the "lite dir" that jupyter lite build reads
 OUTPUT = BUILD / "lite"
@@ -66,7 +66,10 @@ DEPENDS = {
     "comm": ["traitlets"],
     "ipywidgets": ["comm", "ipython", "traitlets"],
     "ipympl": ["ipython", "ipywidgets", "matplotlib", "numpy", "pillow", "traitlets"],
-    "dhlab": ["numpy", "sympy", "matplotlib", "ipywidgets", "ipympl"],
+    "anywidget": ["ipywidgets", "psygnal", "typing-extensions"],
+    "psygnal": [],
+    "typing-extensions": [],
+    "dhlab": ["numpy", "sympy", "matplotlib", "ipywidgets", "ipympl", "anywidget"],
     "piplite": ["micropip"],
     "pyodide-kernel": [],
     "ipykernel": [],
@@ -88,6 +91,11 @@ class BuildError(SystemExit):
 
     def __init__(self, message: str):
         super().__init__(f"\nmake lite: {message}\n")
+
+
+def shown(path: Path) -> Path:
+    """``path`` relative to the checkout when it is inside it (a build of one's own may not be)."""
+    return path.relative_to(ROOT) if path.is_relative_to(ROOT) else path
 
 
 def canonical(name: str) -> str:
@@ -385,7 +393,7 @@ def main():
     if not lite_app.exists():
         raise BuildError(f"{lite_app} not found: run this with the build venv's python "
                          "(make lite creates it from lite/requirements.txt)")
-    print("staging the site in", STAGE.relative_to(ROOT))
+    print("staging the site in", shown(STAGE))
     stage_site()
     shutil.rmtree(OUTPUT, ignore_errors=True)
     run(lite_app, "build", "--lite-dir", STAGE, "--output-dir", OUTPUT, cwd=STAGE)
@@ -393,7 +401,7 @@ def main():
     open_on_start_here()
     (OUTPUT / ".nojekyll").touch()         # GitHub Pages: serve the folder as it is
     size = sum(p.stat().st_size for p in OUTPUT.rglob("*") if p.is_file())
-    print(f"built {OUTPUT.relative_to(ROOT)}: {size / 1e6:.0f} MB; serve it with `make lite-serve`")
+    print(f"built {shown(OUTPUT)}: {size / 1e6:.0f} MB; serve it with `make lite-serve`")
 
 
 if __name__ == "__main__":

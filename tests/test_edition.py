@@ -392,3 +392,41 @@ def test_build_if_stale_rebuilds_only_what_changed_and_writes_the_home(edition, 
     assert ed._build(edition, [SAMPLE], explicit=False, execute=False, if_stale=True) == 0
     assert f"building {edition.spanish_path(SAMPLE)}" in capsys.readouterr().out
     assert fresh(edition).check(SAMPLE) == []
+
+
+# --- the assignment (notebook 8): in the edition, and the source of every Spanish release ------------------
+
+ASSIGNMENT = "08_puma_assignment"
+
+
+def test_the_assignment_is_in_the_edition_and_its_code_is_the_english_code():
+    assert ASSIGNMENT in EDITION_NOTEBOOKS
+    english, spanish = REPO.english(ASSIGNMENT), REPO.spanish(ASSIGNMENT)
+    code_en = [c.source for c in english.cells if c.cell_type == "code"]
+    code_es = [c.source for c in spanish.cells if c.cell_type == "code"]
+    assert ed.SET_LANGUAGE_ES in code_es[0] and ed.SET_LANGUAGE_EN in code_en[0]
+    assert code_es == [s.replace(ed.SET_LANGUAGE_EN, ed.SET_LANGUAGE_ES) for s in code_en]
+    assert [c.metadata.get("nbgrader") for c in spanish.cells] == [c.metadata.get("nbgrader") for c in english.cells]
+
+
+def test_the_home_lists_the_spanish_assignment_beside_the_english_one():
+    home = REPO.home().cells[1].source
+    assert f"({ASSIGNMENT}.ipynb)" in home
+    assert (f"(es/{ASSIGNMENT}.ipynb)" in home) == REPO.spanish_path(ASSIGNMENT).exists()
+
+
+def test_a_spanish_release_uses_the_editions_text(tmp_path):
+    """Every markdown cell the variant leaves alone reads as in notebooks/es/08 (one translation, one catalog)."""
+    import json
+    from dhlab.grading import release as R
+    roster = tmp_path / "roster.csv"
+    roster.write_text("id\nana\n", encoding="utf-8")
+    (tmp_path / "key").write_bytes(b"edition-test-secret-0123456789\n")
+    assert R.main(["release", str(roster), "-o", str(tmp_path / "out"), "--secret-file", str(tmp_path / "key"),
+                   "--language", "es"]) == 0
+    released = json.loads((tmp_path / "out" / "ana.ipynb").read_text(encoding="utf-8"))
+    edition = {c.id: c.source for c in REPO.spanish(ASSIGNMENT).cells}
+    same = [c for c in released["cells"] if c["cell_type"] == "markdown" and "".join(c["source"]) == edition.get(c["id"])]
+    texts = ["".join(c["source"]) for c in same]
+    assert any(t.startswith("## Parte 2") for t in texts) and any(t.startswith("## Parte 3") for t in texts), \
+        "the cells the variant does not change are the edition's"

@@ -2,7 +2,9 @@
 checks, errors and panels speak it."""
 import ast
 import gettext
+import json
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -161,7 +163,7 @@ def test_feedback_of_a_check_in_spanish(spanish):
     text = str(fb)
     assert text.startswith("✗ Ejercicio 1.1:")
     assert "grados" in text and "radianes" in text and "deg2rad(45)" in text
-    assert "¿Te atoraste?" in text
+    assert "¿Se atoró?" in text
     import sympy as sp
     th = sp.Symbol("theta")
     R = sp.Matrix([[sp.cos(th), -sp.sin(th)], [sp.sin(th), sp.cos(th)]])
@@ -241,14 +243,14 @@ def test_the_case_feedback_in_spanish(spanish):
     from dhlab.course.exercises_dh import exercise
     text = str(exercise("5.1").check({1: "paralelos", 2: "paralelos", 3: "se cortan"}))
     assert "Ejercicio 5.1: los casos de x1 … x3 todavía no están bien." in text
-    assert "dijiste que z0 y z1 son paralelos" in text
+    assert "dijo que z0 y z1 son paralelos" in text
 
 
 def test_a_table_feedback_in_spanish(spanish):
     from dhlab.course.exercises_dh import check_table
     text = str(check_table([("q1", 0.5, 0.2, -90), ("q2 - 90", 0, 0.5, -90), ("q3", 0, 0, -90), ("q4", 0.5, 0, 0)]))
-    assert text.startswith("✗ tu tabla todavía no está bien: corrige esto primero")
-    assert "articulación 3: tu α2 es -90°" in text and "son paralelos" in text
+    assert text.startswith("✗ su tabla todavía no está bien: corrija esto primero")
+    assert "articulación 3: su α2 es -90°" in text and "son paralelos" in text
 
 
 def test_a_panel_readout_in_spanish(spanish):
@@ -265,9 +267,9 @@ def test_a_prediction_in_spanish(spanish):
     from dhlab.course.predict import case_prediction
     p = case_prediction(((0, 0, 0), (0, 0, 1)), ((1, 0, 0), (0, 0, 1)), 1)      # two parallel lines, 1 apart
     prompt = str(p.check(...))
-    assert "primero predice: el caso de x1" in prompt and "respuesta resuelta" in prompt
+    assert "primero prediga: el caso de x1" in prompt and "respuesta resuelta" in prompt
     wrong = str(p.check("se cortan"))
-    assert wrong.startswith("✗ tu caso de x1 todavía no está bien.") and "normal común" not in wrong
+    assert wrong.startswith("✗ su caso de x1 todavía no está bien.") and "normal común" not in wrong
     right = str(p.check("paralelos"))
     assert "z0 y z1 son paralelos: caso 2, x1 sobre cualquier normal común (de longitud 1)." in right
 
@@ -277,7 +279,7 @@ def test_a_row_prediction_names_the_row_in_spanish(spanish):
     from dhlab.course.predict import row_prediction
     robot = dhlab.DHRobot.from_table([("q1", 0, 1, 0), ("q2", 0, 0.5, 0)], name="2R")
     text = str(row_prediction(robot, 2).check(("q1", 0, 0.5, 0)))
-    assert text.startswith("✗ tu fila 2") and "la articulación 2 es rotacional: su variable q2 va en θ" in text
+    assert text.startswith("✗ su fila 2") and "la articulación 2 es rotacional: su variable q2 va en θ" in text
 
 
 def test_a_chain_and_a_dh_boundary_error_in_spanish(spanish):
@@ -328,3 +330,116 @@ def test_a_figure_title_in_spanish(spanish):
     from dhlab.course import figures_dh
     fig = figures_dh.dh_parameters_figure()
     assert fig.axes[0].get_title() == "los cuatro parámetros DH del eslabón $i$"
+
+
+# --- one register: usted, as the seeds address the student ------------------------------------------------------
+# forms that only *tú* uses: pronouns, 2nd-person verbs, and imperatives that open a sentence
+# ("Revisa …"; in the middle of one, "revisa" may be "he/it checks", which usted also says)
+TU_WORDS = ["tú", "tu", "tus", "ti", "contigo", "tuyo", "tuya", "te", "puedes", "tienes", "debes", "quieres", "estás",
+            "necesitas", "obtienes", "sabes", "verás", "podrás", "tendrás", "diste", "escribiste", "usaste",
+            "respondiste", "obtuviste", "hiciste", "pusiste", "elegiste", "dijiste", "omitiste", "elige", "escoge",
+            "pon", "haz", "fíjate", "asegúrate", "pregúntate", "sustituye", "conviertas", "sustituyas", "olvides",
+            "escríbela", "conviértelo", "llénalo", "ejecútala", "dala", "dalo", "gíralo", "ponlo", "multiplícalas"]
+TU_OPENING = ["Revisa", "Calcula", "Escribe", "Observa", "Mira", "Mueve", "Usa", "Compara", "Prueba a", "Sustituye",
+              "Verifica", "Da", "Pasa", "Llama", "Lee", "Dibuja", "Elige", "Vuelve", "Responde", "Recuerda", "Sigue"]
+_TU = re.compile(r"(?<![\w{])(" + "|".join(TU_WORDS) + r")(?![\w}])", re.IGNORECASE)
+_TU_OPENING = re.compile(r"(?:^|[.:;!?¿(]\s+|<b>)(" + "|".join(TU_OPENING) + r")\b")
+
+
+def tu_forms(text: str) -> list:
+    """The *tú* forms in a Spanish message (code spans and placeholders left out)."""
+    text = re.sub(r"`[^`]*`|\{[^{}]*\}|'[^']*'", " ", text)
+    return _TU.findall(text) + _TU_OPENING.findall(text)
+
+
+def test_the_catalog_addresses_the_student_as_usted(catalog):
+    found = {m.id: tu_forms(m.string) for m in catalog if m.id and m.string and tu_forms(m.string)}
+    assert not found, f"{len(found)} messages say tú, not usted: {list(found.items())[:5]}"
+
+
+@pytest.mark.parametrize("text", ["Revisa tu respuesta.", "¿Te atoraste? Llama .hint().", "no conviertas dos veces",
+                                  "tienes {mine}, que no es correcto.", "Escríbela con símbolos. Sustituye ... por "
+                                  "tu predicción"])
+def test_the_register_check_finds_tu(text):
+    assert tu_forms(text)
+
+
+@pytest.mark.parametrize("text", ["Revise su respuesta.", "la prueba de la regla 7", "el eslabón gira 90°",
+                                  "a x le toca l2·cos q2", "{tu} es un nombre de variable", "q1 se mide desde x0"])
+def test_the_register_check_leaves_usted_alone(text):
+    assert not tu_forms(text)
+
+
+# --- the words the notebooks' code cells print (the Spanish edition shares that code) ---------------------
+_WORD = re.compile(r"(?<![\w{])[a-z][a-z']+\b")          # a lowercase word of 2+ letters, outside {fields}
+_MATHS = {"det", "cos", "sin", "tan", "fk", "eq", "rad", "deg", "dtheta", "theta", "dx", "dy", "px", "dpi", "mm"}
+
+
+def _literal(node) -> str:
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return node.value
+    if isinstance(node, ast.JoinedStr):
+        return " ".join(v.value for v in node.values if isinstance(v, ast.Constant))
+    return ""
+
+
+def printed_english(source: str) -> list:
+    """The string literals of ``print(...)`` calls in a code cell that hold at least two English words and are
+    not marked ``_("…")`` (in the Spanish edition they would print English)."""
+    found = []
+    for call in ast.walk(ast.parse(i18n_catalog.cell_python(source))):
+        if not (isinstance(call, ast.Call) and isinstance(call.func, ast.Name) and call.func.id == "print"):
+            continue
+        todo = list(call.args)
+        while todo:
+            node = todo.pop()
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "_":
+                continue                                   # marked: translated where shown
+            words = [w for w in _WORD.findall(_literal(node)) if w not in _MATHS]
+            if len(words) >= 2:
+                found.append(_literal(node))
+            todo += [v.value for v in node.values if isinstance(v, ast.FormattedValue)] \
+                if isinstance(node, ast.JoinedStr) else list(ast.iter_child_nodes(node))
+    return found
+
+
+def _lesson_code_cells():
+    for path in i18n_catalog.notebook_paths():
+        for cell in json.loads(path.read_text(encoding="utf-8"))["cells"]:
+            if cell["cell_type"] == "code":
+                yield path.name, cell.get("id"), "".join(cell["source"])
+
+
+def test_the_lesson_notebooks_print_no_unmarked_english():
+    found = {(name, cell_id): english for name, cell_id, source in _lesson_code_cells()
+             if (english := printed_english(source))}
+    assert not found, (f"{len(found)} code cells print English the Spanish edition cannot translate: write "
+                       f"print(_(\"same table:\"), ok) or _(\"x{{i}}: case {{case}}\").format(...), then "
+                       f"python -m dhlab.i18n_catalog extract/update and translate: {list(found.items())[:3]}")
+
+
+@pytest.mark.parametrize("source, english", [
+    ('print("same table as the seed\'s:", ok)', True),
+    ('print(f"pen at {fmt(p)}, joint 2 at {fmt(j)}")', True),
+    ('print("\\n".join(f"{name}: the same" for name in names))', True),
+    ('print(_("same table as the seed\'s:"), ok)', False),
+    ('print(_("pen at {pen}").format(pen=fmt(p)))', False),
+    ('print("T =", T, "det R =", det)', False),
+    ('%matplotlib inline\nprint(f"cos(θ) = {c:.3f}")', False)])
+def test_the_printed_english_check(source, english):
+    assert bool(printed_english(source)) is english
+
+
+def test_a_notebook_message_is_in_the_catalog_with_its_cell(catalog):
+    where = {m.id: m.locations for m in i18n_catalog.extract_messages()}
+    assert ("notebooks/07_ssrms.ipynb#n07-18", 4) in where["same table as the seed's:"]
+    spanish = {m.id: m.string for m in catalog}
+    assert spanish["same table as the seed's:"] == "misma tabla que la de la semilla:"
+
+
+def test_underscore_is_not_rebound_in_the_lesson_notebooks():
+    """``_`` is the translation function there: ``x, _ = ...`` or ``for _ in ...`` would break every later cell."""
+    rebound = [(name, cell_id) for name, cell_id, source in _lesson_code_cells()
+               for node in ast.walk(ast.parse(i18n_catalog.cell_python(source)))
+               if isinstance(node, ast.Name) and node.id == "_" and isinstance(node.ctx, ast.Store)]
+    assert not rebound, f"cells that rebind _ (name the value instead): {rebound}"

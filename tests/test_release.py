@@ -41,7 +41,7 @@ def test_release_writes_one_signed_notebook_per_student(class_folder):
     assert files == sorted(["ana.ipynb", "bruno.ipynb", "cobra.ipynb", R.safe_filename("Ana María") + ".ipynb",
                             R.safe_filename("Ana_María") + ".ipynb"])
     manifest = (folder / "out" / "_teacher" / "manifest.csv").read_text(encoding="utf-8").splitlines()
-    assert manifest[0] == "student_id,file,family,fingerprint" and len(manifest) == 6
+    assert manifest[0] == "student_id,file,family,fingerprint,language" and len(manifest) == 6
     fingerprints = set()
     for line in manifest[1:]:
         sid, file = line.split(",")[:2]

@@ -59,6 +59,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..dh import DHRobot, PrismaticDH, RevoluteDH  # noqa: F401
+from ..i18n import _
 from ..kinematics import elementary
 from ..lines import Line, relation  # noqa: F401
 from ..symbolic import exact_angle  # noqa: F401
@@ -145,25 +146,24 @@ def dh_assignment(axes, tool=None, *, case1: str = "nearest", parallel: str = "a
     _read_choice(parallel, PARALLEL_RULES, "parallel")
     _read_choice(prismatic, PRISMATIC_RULES, "prismatic")
     rel = _read_tol(tol)
-    limits = _read_qlim(qlim, [kind for _, _, kind in lines])
-    scale = _scale([p for p, _, _ in lines] + [tool_point])
+    limits = _read_qlim(qlim, [kind for _point, _direction, kind in lines])
+    scale = _scale([p for p, _direction, _kind in lines] + [tool_point])
     placer = _Placer(lines, tool_pose, tool_point, rel, rel * scale, sign_rule, case1, parallel, prismatic)
     frames, steps = placer.place()
 
     rows = [_dh_row(frames[i - 1], frames[i]) for i in range(1, len(lines) + 1)]
     links = [_link(kind, row, rel * scale, rel, lim)
-             for (_, _, kind), row, lim in zip(lines, rows, limits)]
+             for (_point, _direction, kind), row, lim in zip(lines, rows, limits)]
     robot = DHRobot(links, name=name, base=_clean(frames[0], rel * scale),
                     joint_symbols=joint_symbols, unit=unit)
     if tool_pose is not None:
         robot.tool = _clean(inv(robot.frames(robot.qz)[-1]) @ tool_pose, rel * scale)
     check = _check(robot, placer.lines, tool_pose, tool_point, scale)
     if max(check) > 1e3 * rel * scale + 1e-9 * scale:
-        raise DHLabError(
-            f"could not place consistent DH frames: the robot built misses the given axes by "
-            f"{check[0]:.3g} and the end effector by {check[1]:.3g}. Some axes are probably parallel "
-            "or intersecting only up to rounding: pass a larger tol (e.g. tol=1e-6)."
-        )
+        raise DHLabError(_(
+            "could not place consistent DH frames: the robot built misses the given axes by {axes} and the end "
+            "effector by {tool}. Some axes are probably parallel or intersecting only up to rounding: pass a larger "
+            "tol (e.g. tol=1e-6).").format(axes=f"{check[0]:.3g}", tool=f"{check[1]:.3g}"))
     _finish_steps(steps, robot, tool_pose, rel * scale)
     report = DHAssignment(robot, steps, rel * scale, scale,
                           dict(case1=case1, parallel=parallel, prismatic=prismatic, tol=rel), check)
@@ -185,8 +185,8 @@ def joint_axes(robot, q=None):
     [([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 'R'), ([0.0, 0.7, 0.0], [0.0, 0.0, 1.0], 'R')]
     """
     if not (hasattr(robot, "_numeric") and hasattr(robot, "frames")):
-        raise DHLabError(f"joint_axes needs a dhlab robot (DHRobot or Robot), e.g. joint_axes(dhlab.robots.ssrms()); "
-                         f"got {_short(robot)}.")
+        raise DHLabError(_("joint_axes needs a dhlab robot (DHRobot or Robot), e.g. joint_axes(dhlab.robots.ssrms()); "
+                           "got {value}.").format(value=_short(robot)))
     q = robot.qz if q is None else check_joint_values(q, robot.links, single=True)
     frames = robot.frames(q)
     axes = []

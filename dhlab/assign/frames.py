@@ -14,6 +14,7 @@ import math
 
 import numpy as np
 
+from ..i18n import _
 from ..lines import Line, relation
 from .report import FrameStep, _deg, _num
 
@@ -45,7 +46,7 @@ class _Placer:
             frames.append(F), steps.append(step)
         F, step = self._frame_n(n, frames[n - 1])
         frames.append(F), steps.append(step)
-        for j, (_, _, kind) in enumerate(self.given):
+        for j, (_point, _direction, kind) in enumerate(self.given):
             if kind == "P":
                 steps[j].notes.append(self._prismatic_note(j))
         return frames, steps
@@ -59,11 +60,11 @@ class _Placer:
         self.lines[j] = Line(p, u)
 
     def _prismatic_note(self, j) -> str:
-        where = ("the previous origin" if j else "the world origin") + " (prismatic='through_origin')"
+        where = (_("the previous origin") if j else _("the world origin")) + " (prismatic='through_origin')"
         if self.prismatic == "given":
-            where = "the given point (prismatic='given')"
-        return (f"joint {j + 1} is prismatic: its direction is fixed (the sliding sense), but the line "
-                f"z{j} may lie anywhere (seed 002 note 002-n2); it was put through {where}")
+            where = _("the given point") + " (prismatic='given')"
+        return _("joint {joint} is prismatic: its direction is fixed (the sliding sense), but the line z{j} may lie "
+                 "anywhere (seed 002 note 002-n2); it was put through {where}").format(joint=j + 1, j=j, where=where)
 
     # --- rule 5 -------------------------------------------------------------------
     def _frame0(self):
@@ -71,14 +72,14 @@ class _Placer:
         origin = self.lines[0].nearest_point(np.zeros(3))
         world_x = np.array([1.0, 0.0, 0.0])
         x = world_x - (world_x @ z) * z
-        x_choice = "the world x axis, made perpendicular to z0"
+        x_choice = _("the world x axis, made perpendicular to z0")
         if np.linalg.norm(x) < 1e-6:                  # z0 along world x
             world_y = np.array([0.0, 1.0, 0.0])
             x = world_y - (world_y @ z) * z
-            x_choice = "z0 is along the world x axis, so the world y axis, made perpendicular to z0"
+            x_choice = _("z0 is along the world x axis, so the world y axis, made perpendicular to z0")
         x = _unit(x)
-        why = "z0 on joint 1's axis (rule 4); origin and x0 are free (rule 5)"
-        step = FrameStep(0, "5", None, None, why, "the point of z0 nearest the world origin",
+        why = _("z0 on joint 1's axis (rule 4); origin and x0 are free (rule 5)")
+        step = FrameStep(0, "5", None, None, why, _("the point of z0 nearest the world origin"),
                          x_choice + " (y0 = z0 × x0)", origin, x, z)
         return _frame(origin, x, z), step
 
@@ -97,35 +98,37 @@ class _Placer:
             if kind == "intersecting":
                 case = 1
                 x, x_choice = self._case1_x(i, rel.normal, x_prev)
-                why = f"{za} and {zb} intersect (at {_deg(angle)}): x{i} is perpendicular to both"
-                origin_choice = "the intersection (rule 6)"
+                why = _("{za} and {zb} intersect (at {angle}): x{i} is perpendicular to both").format(
+                    za=za, zb=zb, angle=_deg(angle), i=i)
+                origin_choice = _("the intersection (rule 6)")
             else:
                 case = 3
                 x = rel.normal                        # from z_{i-1} towards z_i
-                why = (f"{za} and {zb} are skew ({_deg(angle)} apart, distance {_num(dist)}): "
-                       "they have one common normal")
-                origin_choice = f"where the common normal meets {zb} (rule 6)"
-                x_choice = f"along the common normal, from {za} towards {zb} (a{i} > 0)"
+                why = _("{za} and {zb} are skew ({angle} apart, distance {distance}): they have one common "
+                        "normal").format(za=za, zb=zb, angle=_deg(angle), distance=_num(dist))
+                origin_choice = _("where the common normal meets {zb} (rule 6)").format(zb=zb)
+                x_choice = _("along the common normal, from {za} towards {zb} (a{i} > 0)").format(za=za, zb=zb, i=i)
                 if dist < NEARLY * self.scale:
-                    notes.append(f"the axes nearly intersect (distance {dist:.2g}): if they should, pass a larger tol")
+                    notes.append(_("the axes nearly intersect (distance {distance}): if they should, pass a larger "
+                                   "tol").format(distance=f"{dist:.2g}"))
             if angle < NEARLY:
-                notes.append(f"the axes are nearly parallel ({angle:.2g} rad): the common normal lies far away; "
-                             "if they should be parallel, pass a larger tol")
+                notes.append(_("the axes are nearly parallel ({angle} rad): the common normal lies far away; if they "
+                               "should be parallel, pass a larger tol").format(angle=f"{angle:.2g}"))
         else:
             case = 2
             origin, origin_choice = self._parallel_origin(i, b, O_prev)
             antiparallel = rel.angle > 90
-            sense = " (opposite directions, so α = 180°)" if antiparallel else ""
+            sense = " " + _("(opposite directions, so α = 180°)") if antiparallel else ""
             if kind == "parallel":
                 x = _unit(origin - a.nearest_point(origin))
-                why = (f"{za} ∥ {zb}{sense}, {_num(dist)} apart: "
-                       "infinitely many common normals, one is chosen")
-                x_choice = f"along that common normal, from {za} towards {zb} (a{i} > 0)"
+                why = _("{za} ∥ {zb}{sense}, {distance} apart: infinitely many common normals, one is chosen").format(
+                    za=za, zb=zb, sense=sense, distance=_num(dist))
+                x_choice = _("along that common normal, from {za} towards {zb} (a{i} > 0)").format(za=za, zb=zb, i=i)
             else:
                 x = x_prev
-                why = (f"{za} and {zb} are the same line{sense}: a{i} = 0, "
-                       f"and x{i} and O{i} are free")
-                x_choice = f"x{i} = x{i - 1} (no turn about {za}: θ{i} offset 0)"
+                why = _("{za} and {zb} are the same line{sense}: a{i} = 0, and x{i} and O{i} are free").format(
+                    za=za, zb=zb, sense=sense, i=i)
+                x_choice = _("x{i} = x{previous} (no turn about {za}: θ{i} offset 0)").format(i=i, previous=i - 1, za=za)
         step = FrameStep(i, "6-8", case, kind, why, origin_choice, x_choice, origin, x, b.direction, notes=notes)
         return _frame(origin, x, b.direction), step
 
@@ -136,15 +139,18 @@ class _Placer:
         if self.sign_rule < 0:
             return -cross, f"x{i} = z{i} × z{i - 1} (case1='z x z_prev', seed 000: -180° < α{i} < 0°)"
         if cross @ x_prev < -1e-9:
-            return -cross, f"x{i} = z{i} × z{i - 1}, the sign nearest x{i - 1} (case1='nearest')"
-        return cross, f"x{i} = z{i - 1} × z{i}, the sign nearest x{i - 1} (case1='nearest')"
+            return -cross, _("x{i} = z{i} × z{previous}, the sign nearest x{previous} (case1='nearest')").format(
+                i=i, previous=i - 1)
+        return cross, _("x{i} = z{previous} × z{i}, the sign nearest x{previous} (case1='nearest')").format(
+            i=i, previous=i - 1)
 
     def _parallel_origin(self, i, b, O_prev):
         if self.parallel == "at_joint":
             origin = b.nearest_point(self.given[i][0])
-            return origin, f"joint {i + 1}'s given point (parallel='at_joint', seed rule 6)"
+            return origin, _("joint {joint}'s given point (parallel='at_joint', seed rule 6)").format(joint=i + 1)
         origin = b.nearest_point(O_prev)
-        return origin, f"the foot of the normal from O{i - 1} (parallel='zero_d': d{i} = 0)"
+        return origin, _("the foot of the normal from O{previous} (parallel='zero_d': d{i} = 0)").format(
+            previous=i - 1, i=i)
 
     # --- rule 9 ---------------------------------------------------------------------------
     def _frame_n(self, n, F_prev):
@@ -154,17 +160,18 @@ class _Placer:
         za = f"z{n - 1}"
         if dist > self.tol:
             kind, origin, x = "parallel", point, _unit(point - foot)
-            why = f"z{n} along {za} (rule 9), through the end effector, {_num(dist)} from {za}"
-            x_choice = f"from {za} towards the end effector (a{n} > 0)"
+            why = _("z{n} along {za} (rule 9), through the end effector, {distance} from {za}").format(
+                n=n, za=za, distance=_num(dist))
+            x_choice = _("from {za} towards the end effector (a{n} > 0)").format(za=za, n=n)
         else:
             kind, origin = "coincident", foot
-            why = f"z{n} along {za} (rule 9); the end effector is on {za}, so x{n} is free"
-            x, x_choice = F_prev[:3, 0], f"x{n} = x{n - 1} (θ{n} offset 0)"
+            why = _("z{n} along {za} (rule 9); the end effector is on {za}, so x{n} is free").format(n=n, za=za)
+            x, x_choice = F_prev[:3, 0], _("x{n} = x{previous} (θ{n} offset 0)").format(n=n, previous=n - 1)
             if self.tool_pose is not None:
                 xt = self.tool_pose[:3, 0] - (self.tool_pose[:3, 0] @ z) * z
                 if np.linalg.norm(xt) > 1e-6:
-                    x, x_choice = _unit(xt), f"the tool's x axis (made perpendicular to z{n})"
-        origin_choice = "the end effector's point (rule 9)"
+                    x, x_choice = _unit(xt), _("the tool's x axis (made perpendicular to z{n})").format(n=n)
+        origin_choice = _("the end effector's point (rule 9)")
         step = FrameStep(n, "9", None, kind, why, origin_choice, x_choice, origin, x, z)
         return _frame(origin, x, z), step
 

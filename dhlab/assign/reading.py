@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..i18n import _
 from ..units import has_angle_mark
 from ..validation import FULL_TURN, DHLabError, as_float_array, as_number, check_length_size, rigid_problem
 from .report import _vec
@@ -30,27 +31,29 @@ def _read_axes(axes) -> list:
     """[(point, unit direction, kind)] or a DHLabError naming the bad entry."""
     example = "[((0, 0, 0), (0, 0, 1), 'R'), ((0, 0, 1), (0, 1, 0), 'P')]"
     if isinstance(axes, (str, bytes, dict)) or not _count(axes):
-        raise DHLabError(f"axes must be a list with one (point, direction, kind) per joint, e.g. {example}; "
-                         f"got {_short(axes)}.")
+        raise DHLabError(_("axes must be a list with one (point, direction, kind) per joint, e.g. {example}; "
+                           "got {value}.").format(example=example, value=_short(axes)))
     lines = []
     for j, entry in enumerate(axes):
-        where = f"axes[{j}] (joint {j + 1})"
+        where = _("axes[{j}] (joint {joint})").format(j=j, joint=j + 1)
         if isinstance(entry, (str, bytes, dict)) or _count(entry) != 3:
-            raise DHLabError(f"{where} must be (point, direction, kind), e.g. ((0, 0, 0), (0, 0, 1), 'R'); "
-                             f"got {_short(entry)}.")
+            raise DHLabError(_("{where} must be (point, direction, kind), e.g. ((0, 0, 0), (0, 0, 1), 'R'); "
+                               "got {value}.").format(where=where, value=_short(entry)))
         point, direction, kind = entry
-        p = _vector3(point, f"{where} point")
-        u = _vector3(direction, f"{where} direction", length=False)
+        p = _vector3(point, _("{where} point").format(where=where))
+        u = _vector3(direction, _("{where} direction").format(where=where), length=False)
         size = float(np.abs(u).max())
         if size < 1e-12:
-            raise DHLabError(
-                f"{where} direction is {_vec(u)}: a joint axis needs a non-zero direction vector. "
-                f"Its sense is the positive sense of q{j + 1} (right-hand rule for 'R', sliding sense for 'P')."
-            )
+            raise DHLabError(_(
+                "{where} direction is {value}: a joint axis needs a non-zero direction vector. Its sense is the "
+                "positive sense of q{joint} (right-hand rule for 'R', sliding sense for 'P').").format(
+                where=where, value=_vec(u), joint=j + 1))
         if not isinstance(kind, str) or kind not in ("R", "P"):
-            hint = f" Write it in capitals: {kind.upper()!r}." if isinstance(kind, str) and kind in ("r", "p") \
-                else " 'R' is a revolute joint (it turns about the axis), 'P' a prismatic one (it slides along it)."
-            raise DHLabError(f"{where} kind must be 'R' or 'P', got {_short(kind)}.{hint}")
+            hint = " " + (_("Write it in capitals: {kind!r}.").format(kind=kind.upper())
+                          if isinstance(kind, str) and kind in ("r", "p") else
+                          _("'R' is a revolute joint (it turns about the axis), 'P' a prismatic one (it slides along it)."))
+            raise DHLabError(_("{where} kind must be 'R' or 'P', got {value}.").format(where=where, value=_short(kind))
+                             + hint)
         u = u / size                                   # first to about 1: no overflow in the norm of (0, 0, 1e308)
         lines.append((p, u / np.linalg.norm(u), kind))
     return lines
@@ -60,9 +63,11 @@ def _vector3(value, name: str, length: bool = True) -> np.ndarray:
     """3 finite numbers; with ``length`` (a point) each at most LARGEST_LENGTH."""
     arr = as_float_array(value, name)
     if arr.shape != (3,):
-        raise DHLabError(f"{name} must be 3 numbers (x, y, z), got shape {arr.shape}: {_short(value)}.")
+        raise DHLabError(_("{name} must be 3 numbers (x, y, z), got shape {shape}: {value}.").format(
+            name=name, shape=arr.shape, value=_short(value)))
     if not np.isfinite(arr).all():
-        raise DHLabError(f"{name} is {arr.tolist()}: every coordinate must be a finite number.")
+        raise DHLabError(_("{name} is {value}: every coordinate must be a finite number.").format(
+            name=name, value=arr.tolist()))
     if length:
         check_length_size(float(np.abs(arr).max()), name)
     return arr
@@ -71,21 +76,21 @@ def _vector3(value, name: str, length: bool = True) -> np.ndarray:
 def _read_tool(tool):
     """(pose or None, point) from a 4x4 pose or a 3-point."""
     if tool is None:
-        raise DHLabError(
+        raise DHLabError(_(
             "tool is missing: rule 9 puts frame n at the end effector, so give its pose (4x4) or its point "
             "(x, y, z), in the same pose and world frame as the axes. If the end effector is on the last "
-            "joint's axis, a point on that axis will do, e.g. tool=axes[-1][0]."
-        )
+            "joint's axis, a point on that axis will do, e.g. tool=axes[-1][0]."))
     arr = as_float_array(tool, "tool")
     if arr.shape == (3,):
         return None, _vector3(arr, "tool")
     if arr.shape != (4, 4):
-        raise DHLabError(f"tool must be the end effector's pose (4x4) or point (x, y, z), got shape {arr.shape}.")
+        raise DHLabError(_("tool must be the end effector's pose (4x4) or point (x, y, z), got shape {shape}.").format(
+            shape=arr.shape))
     if not np.isfinite(arr).all():
-        raise DHLabError("tool has a value that is not a finite number (nan or inf): check the pose.")
+        raise DHLabError(_("tool has a value that is not a finite number (nan or inf): check the pose."))
     problem = rigid_problem(arr)
     if problem:
-        raise DHLabError(f"tool is not a proper rigid transform: {problem}.")
+        raise DHLabError(_("tool is not a proper rigid transform: {problem}.").format(problem=problem))
     check_length_size(float(np.abs(arr[:3, 3]).max()), "tool (its position)")
     return arr, arr[:3, 3].copy()
 
@@ -94,18 +99,20 @@ def _read_choice(value, allowed, name: str):
     key = " ".join(value.replace("×", "x").split()) if isinstance(value, str) else None
     if key not in allowed:                        # (text only: a list or a dict is not an option)
         options = ", ".join(repr(a) for a in allowed)
-        raise DHLabError(f"{name} must be one of {options}, got {_short(value)}.")
+        raise DHLabError(_("{name} must be one of {options}, got {value}.").format(
+            name=name, options=options, value=_short(value)))
     return allowed[key] if isinstance(allowed, dict) else key
 
 
 def _read_tol(tol) -> float:
-    expected = "tol must be a small positive number (relative tolerance, e.g. 1e-9; at most 1e-2)"
+    expected = _("tol must be a small positive number (relative tolerance, e.g. 1e-9; at most 1e-2)")
     try:
         value = as_number(tol, "tol")              # text, True, None, nan, complex: refused
     except DHLabError as error:
-        raise DHLabError(f"{expected}, got {_short(tol)}: {error}") from None
+        raise DHLabError(_("{expected}, got {value}: {error}").format(expected=expected, value=_short(tol),
+                                                                   error=error)) from None
     if not (0 < value <= 1e-2):
-        raise DHLabError(f"{expected}, got {_short(tol)}.")
+        raise DHLabError(_("{expected}, got {value}.").format(expected=expected, value=_short(tol)))
     return value
 
 
@@ -113,20 +120,23 @@ def _read_qlim(qlim, kinds) -> list:
     if qlim is None:
         return [None] * len(kinds)
     if isinstance(qlim, (str, bytes, dict, set)) or _count(qlim) != len(kinds):
-        raise DHLabError(f"qlim must give one (low, high) per joint ({len(kinds)}), got {_short(qlim)}.")
+        raise DHLabError(_("qlim must give one (low, high) per joint ({n}), got {value}.").format(
+            n=len(kinds), value=_short(qlim)))
     out = []
     for j, (limits, kind) in enumerate(zip(qlim, kinds)):
         if kind == "P" and has_angle_mark(limits):
-            raise DHLabError(f"qlim[{j}] (joint {j + 1}, prismatic) is a range of lengths, but it was made with "
-                             f"deg2rad(): give lengths, e.g. (0.0, 0.5); got {_short(limits)}.")
+            raise DHLabError(_("qlim[{j}] (joint {joint}, prismatic) is a range of lengths, but it was made with "
+                               "deg2rad(): give lengths, e.g. (0.0, 0.5); got {value}.").format(
+                j=j, joint=j + 1, value=_short(limits)))
         arr = as_float_array(limits, f"qlim[{j}]")
         if arr.shape != (2,) or not np.isfinite(arr).all() or not arr[0] < arr[1]:
-            raise DHLabError(f"qlim[{j}] (joint {j + 1}) must be (low, high) with low < high, got {_short(limits)}.")
+            raise DHLabError(_("qlim[{j}] (joint {joint}) must be (low, high) with low < high, got {value}.").format(
+                j=j, joint=j + 1, value=_short(limits)))
         if kind == "R" and np.abs(arr).max() > FULL_TURN + 1e-9:
-            raise DHLabError(
-                f"qlim[{j}] (joint {j + 1}, revolute) is {arr.tolist()}: more than one full turn. Limits are "
-                f"radians: for degrees write dhlab.deg2rad({arr[0]:g}), dhlab.deg2rad({arr[1]:g})."
-            )
+            raise DHLabError(_(
+                "qlim[{j}] (joint {joint}, revolute) is {value}: more than one full turn. Limits are radians: for "
+                "degrees write dhlab.deg2rad({low}), dhlab.deg2rad({high}).").format(
+                j=j, joint=j + 1, value=arr.tolist(), low=f"{arr[0]:g}", high=f"{arr[1]:g}"))
         out.append((float(arr[0]), float(arr[1])))
     return out
 

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..i18n import _
 from ..table import format_angle, format_length
 
 __all__ = ["FrameStep", "DHAssignment"]
@@ -50,20 +51,22 @@ class FrameStep:
     @property
     def title(self) -> str:
         if self.i == 0:
-            return "frame 0 (rule 5)"
+            return _("frame 0 (rule 5)")
         if self.case is None:
-            return f"frame {self.i} (rule 9, end effector)"
-        return f"frame {self.i}: case {self.case}"
+            return _("frame {i} (rule 9, end effector)").format(i=self.i)
+        return _("frame {i}: case {case}").format(i=self.i, case=self.case)
 
     def lines(self) -> list:
         """The step as text lines (what ``print(report)`` shows for it)."""
         out = [f"{self.title} — {self.why}",
-               f"    origin O{self.i} = {_vec(self.origin)}: {self.origin_choice}",
+               "    " + _("origin O{i} = {point}: {choice}").format(i=self.i, point=_vec(self.origin),
+                                                                     choice=self.origin_choice),
                f"    x{self.i} = {_vec(self.x)}: {self.x_choice}"]
         if self.row is not None:
             theta, d, a, alpha = self.row
-            out.append(f"    row {self.i}: θ = {theta}, d = {d}, a = {a}, α = {alpha}")
-        out += [f"    note: {note}" for note in self.notes]
+            out.append("    " + _("row {i}: θ = {theta}, d = {d}, a = {a}, α = {alpha}").format(
+                i=self.i, theta=theta, d=d, a=a, alpha=alpha))
+        out += ["    " + _("note: {note}").format(note=note) for note in self.notes]
         return out
 
 
@@ -100,14 +103,15 @@ class DHAssignment:
 
     def _header(self) -> str:
         kinds = " ".join("R" if link.is_revolute else "P" for link in self.robot.links)
-        return (f"DH frames of {self.robot.name!r}: {self.robot.n} joints ({kinds}); "
-                f"lengths below {self.tol:.2g} count as 0")
+        return _("DH frames of {name!r}: {n} joints ({kinds}); lengths below {tol} count as 0").format(
+            name=self.robot.name, n=self.robot.n, kinds=kinds, tol=f"{self.tol:.2g}")
 
     def _footer(self) -> str:
         rounding = 1e-12 * self.scale                 # differences below this are rounding: shown as 0
         axis_dev, tool_dev = (f"{v:.1g}" if v > rounding else "0" for v in self.check)
-        return (f"check at q = 0: every z_(i-1) lies on joint i's axis with its direction (off by {axis_dev}), "
-                f"the end effector is as given (off by {tool_dev}); rounding below {rounding:.1g} shows as 0")
+        return _("check at q = 0: every z_(i-1) lies on joint i's axis with its direction (off by {axis}), the end "
+                 "effector is as given (off by {tool}); rounding below {rounding} shows as 0").format(
+            axis=axis_dev, tool=tool_dev, rounding=f"{rounding:.1g}")
 
     def __str__(self) -> str:
         lines = [self._header()]
@@ -121,13 +125,13 @@ class DHAssignment:
 
     def _repr_html_(self) -> str:
         head = "".join(f"<th>{h}</th>" for h in
-                       ("frame", "case", "why", "origin", "x", "θ", "d", "a", "α"))
+                       (_("frame"), _("case"), _("why"), _("origin"), "x", "θ", "d", "a", "α"))
         body = []
         for s in self.steps:
-            case = "rule 5" if s.i == 0 else ("rule 9" if s.case is None else str(s.case))
+            case = _("rule 5") if s.i == 0 else (_("rule 9") if s.case is None else str(s.case))
             why = html.escape(s.why)
-            choice = html.escape(f"origin: {s.origin_choice}; x{s.i}: {s.x_choice}")
-            notes = "".join(f"<br><em>note: {html.escape(n)}</em>" for n in s.notes)
+            choice = html.escape(_("origin: {origin}; x{i}: {x}").format(origin=s.origin_choice, i=s.i, x=s.x_choice))
+            notes = "".join("<br><em>" + html.escape(_("note: {note}").format(note=n)) + "</em>" for n in s.notes)
             row = s.row or ("", "", "", "")
             cells = [str(s.i), case, f"{why}<br><small>{choice}</small>{notes}",
                      html.escape(_vec(s.origin)), html.escape(_vec(s.x))] + [html.escape(c) for c in row]

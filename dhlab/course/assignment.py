@@ -38,6 +38,8 @@ import numpy as np
 from ..grading import answers as _answers
 from ..grading import checks as _checks
 from ..grading import puma as _puma
+from ..grading.language import current_language, speaking
+from ..i18n import _
 from ..validation import DHLabError, describe
 from . import assignment_inputs as _inputs
 from .assignment_views import Note, current_robot, my_robot_figure, puma_figure, robot_of, teach
@@ -62,14 +64,14 @@ class JointTerm:
 
     def __init__(self, joint: int, sign: int = 1, const: float = 0.0):
         self.joint, self.sign = _inputs.joint_number(joint), _inputs.sign(sign)
-        self.const = _inputs.constant(const, f"the constant of q{self.joint}")
+        self.const = _inputs.constant(const, _("the constant of q{j}").format(j=self.joint))
 
     def _shift(self, number, sign_of_number=1):
         if isinstance(number, JointTerm):
-            raise DHLabError("θ_i holds one joint variable, q_i, plus a constant: "
-                             f"{self!r} and {number!r} cannot be added.")
-        number = _inputs.degrees(number, f"the number added to {self!r}",     # a deg2rad() value: back to degrees
-                                 unit="angle (degrees) or length (metres)")
+            raise DHLabError(_("θ_i holds one joint variable, q_i, plus a constant: "
+                               "{a} and {b} cannot be added.").format(a=repr(self), b=repr(number)))
+        number = _inputs.degrees(number, _("the number added to {term}").format(term=repr(self)),
+                                 unit=_("angle (degrees) or length (metres)"))     # a deg2rad() value: back to degrees
         return JointTerm(self.joint, self.sign, self.const + sign_of_number * number)
 
     def __add__(self, number):
@@ -93,7 +95,8 @@ class JointTerm:
         unit = _inputs.unit_factor(factor)
         if unit is not None:
             return self if unit == 1 else -self
-        raise DHLabError(f"θ_i = ±q_i + constant: the joint variable cannot be multiplied by {describe(factor)}.")
+        raise DHLabError(_("θ_i = ±q_i + constant: the joint variable cannot be multiplied by {factor}.").format(
+            factor=describe(factor)))
 
     __rmul__ = __mul__
 
@@ -117,19 +120,20 @@ class ZFactor:
 
     def __init__(self, theta, d):
         if _inputs.is_text(theta):
-            theta = JointTerm(*_inputs.term_parts(theta, "θ in Tz[θ, d]"))
+            theta = JointTerm(*_inputs.term_parts(theta, _("θ in Tz[θ, d]")))
         if _inputs.is_text(d):
-            d = JointTerm(*_inputs.term_parts(d, "d in Tz[θ, d]"))
+            d = JointTerm(*_inputs.term_parts(d, _("d in Tz[θ, d]")))
         if isinstance(theta, JointTerm) and isinstance(d, JointTerm):
-            raise DHLabError(f"Tz[{theta!r}, {d!r}] has two joint variables: a link has one, in θ for a "
-                             "revolute joint or in d for a prismatic one; the other entry is a constant.")
-        self.theta = theta if isinstance(theta, JointTerm) else _inputs.degrees(theta, "θ in Tz[θ, d]")
-        self.d = d if isinstance(d, JointTerm) else _inputs.length(d, "d in Tz[θ, d]")
+            raise DHLabError(_("Tz[{theta}, {d}] has two joint variables: a link has one, in θ for a "
+                               "revolute joint or in d for a prismatic one; the other entry is a constant.").format(
+                theta=repr(theta), d=repr(d)))
+        self.theta = theta if isinstance(theta, JointTerm) else _inputs.degrees(theta, _("θ in Tz[θ, d]"))
+        self.d = d if isinstance(d, JointTerm) else _inputs.length(d, _("d in Tz[θ, d]"))
 
     def __matmul__(self, other):
         if isinstance(other, XFactor):
             return DHTransform(self, other)
-        raise DHLabError("only the form Tz[θ, d]·Tx[α, a] is allowed (seed 000): a Tz is followed by a Tx.")
+        raise DHLabError(_("only the form Tz[θ, d]·Tx[α, a] is allowed (seed 000): a Tz is followed by a Tx."))
 
     __mul__ = __matmul__          # the seed writes the product with *
 
@@ -143,13 +147,13 @@ class XFactor:
 
     def __init__(self, alpha, a):
         if isinstance(alpha, JointTerm) or isinstance(a, JointTerm):
-            raise DHLabError("α and a are constants of the link: the joint variable goes in Tz "
-                             "(in θ for a revolute joint).")
-        self.alpha, self.a = _inputs.degrees(alpha, "α in Tx[α, a]"), _inputs.length(a, "a in Tx[α, a]")
+            raise DHLabError(_("α and a are constants of the link: the joint variable goes in Tz "
+                               "(in θ for a revolute joint)."))
+        self.alpha, self.a = _inputs.degrees(alpha, _("α in Tx[α, a]")), _inputs.length(a, _("a in Tx[α, a]"))
 
     def __matmul__(self, other):
-        raise DHLabError("only the form Tz[θ, d]·Tx[α, a] is allowed (seed 000): "
-                         "write Tz(...) @ Tx(...), Tz first.")
+        raise DHLabError(_("only the form Tz[θ, d]·Tx[α, a] is allowed (seed 000): "
+                           "write Tz(...) @ Tx(...), Tz first."))
 
     __mul__ = __matmul__
 
@@ -172,14 +176,14 @@ class DHTransform:
 
     def __init__(self, z: ZFactor, x: XFactor):
         if not isinstance(z, ZFactor) or not isinstance(x, XFactor):
-            raise DHLabError("a transformation is Tz(θ, d) @ Tx(α, a); DHTransform(z, x) takes a Tz and a Tx, "
-                             f"got {type(z).__name__} and {type(x).__name__}.")
+            raise DHLabError(_("a transformation is Tz(θ, d) @ Tx(α, a); DHTransform(z, x) takes a Tz and a Tx, "
+                               "got {z} and {x}.").format(z=type(z).__name__, x=type(x).__name__))
         self.z, self.x = z, x
 
     def __matmul__(self, other):
         if isinstance(other, (DHTransform, DHChain)):
             return DHChain([self]) @ other
-        raise DHLabError("a transformation T_i is multiplied by another T_j (write T1 @ T2 @ ...).")
+        raise DHLabError(_("a transformation T_i is multiplied by another T_j (write T1 @ T2 @ ...)."))
 
     __mul__ = __matmul__
 
@@ -205,7 +209,8 @@ class DHTransform:
     def _row(self):
         row = _answers.parse_answers({"T1": _answers.to_plain(self)}).T[0]
         if not isinstance(row, _answers.Row):       # only if its fields were changed after Tz/Tx checked them
-            raise DHLabError(f"{self!r} cannot be read: {getattr(row, 'why', row)}.")
+            raise DHLabError(_("{transform} cannot be read: {why}.").format(
+                transform=repr(self), why=getattr(row, "why", row)))
         return row
 
     def __repr__(self):
@@ -221,8 +226,8 @@ class DHChain:
         except TypeError:
             transforms = [transforms]
         if not all(isinstance(t, DHTransform) for t in transforms):
-            raise DHLabError("a chain is a list of transformations T_i = Tz(θ, d) @ Tx(α, a) "
-                             "(write T1 @ T2 @ ...).")
+            raise DHLabError(_("a chain is a list of transformations T_i = Tz(θ, d) @ Tx(α, a) "
+                               "(write T1 @ T2 @ ...)."))
         self.transforms = transforms
 
     def __matmul__(self, other):
@@ -230,7 +235,7 @@ class DHChain:
             return DHChain(self.transforms + [other])
         if isinstance(other, DHChain):
             return DHChain(self.transforms + other.transforms)
-        raise DHLabError("a chain is multiplied by transformations T_i (write T1 @ T2 @ ...).")
+        raise DHLabError(_("a chain is multiplied by transformations T_i (write T1 @ T2 @ ...)."))
 
     __mul__ = __matmul__
 
@@ -307,7 +312,7 @@ def check_part(part: int, namespace) -> Feedback:
     the frames the student's T1…Tn build (so its scored cell comes after part 3)."""
     part = _inputs.part_number(part)
     if not hasattr(namespace, "keys"):
-        raise DHLabError("pass the notebook's variables: check_part(1, globals()).")
+        raise DHLabError(_("pass the notebook's variables: check_part(1, globals())."))
     ref = current_robot()
     answers = _answers.answers_from_namespace(namespace, ref.n)     # exactly as the grader reads them
     if part == 1:
@@ -315,12 +320,25 @@ def check_part(part: int, namespace) -> Feedback:
     analysis = _checks._analyse(answers, ref)       # part 2 is checked in the frames of the student's T_k
     if part == 2:
         return Feedback(_checks.check_part2(answers, analysis))
-    part2 = _checks.check_part2(answers, analysis)
-    moved = [item.label.split(" (")[0] for item in part2.items
-             if item.ok is False and item.message.startswith("drawn in a valid DH frame")]
-    note = (f"(part 2 again, in the frames these T1…T{ref.n} build: {', '.join(moved)} not drawn in "
-            f"{'them' if len(moved) > 1 else 'it'}; see part 2's score below)" if moved else "")
+    moved = [label.split(" (")[0] for label in _moved_links(answers, analysis)]
+    note = ""
+    if moved:
+        note = (_("(part 2 again, in the frames these T1…T{n} build: {links} not drawn in them; "
+                  "see part 2's score below)") if len(moved) > 1 else
+                _("(part 2 again, in the frames these T1…T{n} build: {links} not drawn in it; "
+                  "see part 2's score below)")).format(n=ref.n, links=", ".join(moved))
     return Feedback(_checks.check_part3(answers, analysis), note=note)
+
+
+def _moved_links(answers, analysis) -> list:
+    """The labels (in the current language) of the links part 2 finds drawn in a valid DH
+    frame, but not in the one the student's T_k give them. The grader's message says which:
+    it is read in English (the same items, in the same order, in either language)."""
+    with speaking("en"):                                            # this thread only
+        english = _checks.check_part2(answers, analysis).items
+    items = english if current_language() == "en" else _checks.check_part2(answers, analysis).items
+    return [item.label for item, en in zip(items, english)
+            if en.ok is False and en.message.startswith("drawn in a valid DH frame")]
 
 
 def check_part1(namespace) -> Feedback:
@@ -377,9 +395,9 @@ def axes_table() -> _Table:
     rows = []
     for i, axis in enumerate(ref.axes, start=1):
         name = anchors[i - 1]
-        rows.append((f"joint {i}", f"{name} = {_xyz(points[name])}", _xyz(axis.direction)))
-    return _Table("Joint axes at the home pose (world frame 0 at the shoulder, metres)",
-                  ("joint", "passes through", "positive direction"), rows)
+        rows.append((_("joint {i}").format(i=i), f"{name} = {_xyz(points[name])}", _xyz(axis.direction)))
+    return _Table(_("Joint axes at the home pose (world frame 0 at the shoulder, metres)"),
+                  (_("joint"), _("passes through"), _("positive direction")), rows)
 
 
 def points_table() -> _Table:
@@ -391,6 +409,7 @@ def points_table() -> _Table:
     rows = []
     for k, link in enumerate(ref.points):
         for name, p in link:
-            rows.append((f"{k} ({_puma.LINK_NAMES[k]})", name, _xyz(p)))
-    return _Table("Link points at the home pose (world frame 0, metres): give them, in this order, "
-                  "in each link's own DH frame", ("link", "point", "world (x, y, z)"), rows)
+            rows.append((f"{k} ({_(_puma.LINK_NAMES[k])})", name, _xyz(p)))
+    return _Table(_("Link points at the home pose (world frame 0, metres): give them, in this order, "
+                    "in each link's own DH frame"), (_("link"), _("point"), _("world (x, y, z)")), rows)
+

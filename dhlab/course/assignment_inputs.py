@@ -24,6 +24,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from ..grading.answers import MAX_NUMBER
+from ..i18n import _
 from ..units import has_angle_mark, is_angle
 from ..validation import DHLabError, as_angle, as_index, as_length, as_number, check_joint_values, describe
 
@@ -35,40 +36,42 @@ MAX_JOINT = 50          # the grader reads the joint variables q1 … q50 (answe
 
 # --- one constant: degrees or metres, as typed ----------------------------------------------
 
-def constant(value, what: str, unit: str = "angle (degrees) or length (metres)") -> float:
+def constant(value, what: str, unit: str = "") -> float:
     """A finite number of at most ``MAX_NUMBER`` (the grader's limit) as a float."""
     number = as_number(value, what)
     if abs(number) > MAX_NUMBER:
-        raise DHLabError(f"{what} = {number:g} is too large: no {unit} of this robot is that big "
-                         f"(at most {MAX_NUMBER:g}). Check the number and its unit.")
+        raise DHLabError(_("{what} = {number:g} is too large: no {unit} of this robot is that big "
+                           "(at most {limit:g}). Check the number and its unit.").format(
+            what=what, number=number, unit=unit or _("angle (degrees) or length (metres)"), limit=MAX_NUMBER))
     return number + 0.0                 # -0.0 -> 0.0: feedback never shows "-0°"
 
 
-def degrees(value, what: str, unit: str = "angle (degrees)") -> float:
+def degrees(value, what: str, unit: str = "") -> float:
     """A number typed in degrees (a value made by dhlab.deg2rad() is converted back)."""
     if is_angle(value):
         value = math.degrees(as_number(value, what))
-    return constant(value, what, unit)
+    return constant(value, what, unit or _("angle (degrees)"))
 
 
 def length(value, what: str) -> float:
     """A length typed in metres (a value made by dhlab.deg2rad() is an angle: refused)."""
     if has_angle_mark(value):
-        raise DHLabError(f"{what} is a length, but you gave an angle ({describe(value)}): give metres.")
-    return constant(value, what, "length (metres)")
+        raise DHLabError(_("{what} is a length, but you gave an angle ({value}): give metres.").format(
+            what=what, value=describe(value)))
+    return constant(value, what, _("length (metres)"))
 
 
 # --- the parts of ±q_i + constant --------------------------------------------------------------
 
 def joint_number(joint) -> int:
     """The i of q_i: a whole number 1 … MAX_JOINT."""
-    return as_index(joint, "the joint number i of q_i", 1, MAX_JOINT)
+    return as_index(joint, _("the joint number i of q_i"), 1, MAX_JOINT)
 
 
 def sign(value) -> int:
     """+1 (q_i) or -1 (-q_i)."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral) or value not in (1, -1):
-        raise DHLabError(f"sign must be 1 (for q_i) or -1 (for -q_i), got {describe(value)}.")
+        raise DHLabError(_("sign must be 1 (for q_i) or -1 (for -q_i), got {value}.").format(value=describe(value)))
     return int(value)
 
 
@@ -92,7 +95,8 @@ def term_parts(value, what: str) -> tuple:
     text = str(value).replace("−", "-").replace("°", "")
     m = _TERM_TEXT.match(text)
     if not m or (m["c1"] and m["c2"]) or (m["c1"] and not m["s"]):
-        raise DHLabError(f"{what} must be a number or ±q_i + a constant, like q2 + 90, got {value!r}.")
+        raise DHLabError(_("{what} must be a number or ±q_i + a constant, like q2 + 90, got {value}.").format(
+            what=what, value=repr(value)))
     const = float((m["c1"] or m["c2"] or "0").replace(" ", ""))
     return int(m["j"]), -1 if m["s"] == "-" else 1, const
 
@@ -106,13 +110,13 @@ def is_text(value) -> bool:
 
 def joint_count(n) -> int:
     """How many joint variables q1 … qn to make."""
-    return as_index(n, "n (the number of joint variables)", 1, MAX_JOINT)
+    return as_index(n, _("n (the number of joint variables)"), 1, MAX_JOINT)
 
 
 def part_number(part) -> int:
     """1, 2 or 3: the part of the assignment to check."""
     if isinstance(part, (bool, np.bool_)) or not isinstance(part, numbers.Integral) or part not in (1, 2, 3):
-        raise DHLabError(f"the assignment has parts 1, 2 and 3 to check, not {describe(part)}.")
+        raise DHLabError(_("the assignment has parts 1, 2 and 3 to check, not {part}.").format(part=describe(part)))
     return int(part)
 
 
@@ -120,7 +124,9 @@ def joint_value(q, where) -> float:
     """The joint value of one T_i: radians where q_i is in θ_i, metres where it is in d_i
     (``where`` is 'θ' or 'd'; None for a row without a joint variable)."""
     if not isinstance(where, (str, type(None))):
-        raise DHLabError(f"where must say which entry holds the joint variable, 'θ' or 'd', got {describe(where)}.")
+        raise DHLabError(_("where must say which entry holds the joint variable, 'θ' or 'd', got {value}.").format(
+            value=describe(where)))
+
     return as_length(q, "q") if where == "d" else as_angle(q, "q")
 
 
@@ -130,7 +136,7 @@ def chain_joint_values(q, rows) -> np.ndarray:
     joint values (radians; metres for a q_i that only appears in a d)."""
     uses = {}
     for row in rows:
-        joint, _, where = row.joint
+        joint, _sign, where = row.joint
         if joint is not None:
             uses.setdefault(joint, set()).add(where)
     n = max(uses, default=0)

@@ -17,9 +17,15 @@ import numpy as np
 from ..grading import answers as _answers
 from ..grading import checks as _checks
 from ..grading import puma as _puma
+from ..i18n import N_, _
 from ..validation import DHLabError
 
 __all__ = ["current_robot", "puma_figure", "robot_of", "my_robot_figure", "teach", "Note"]
+
+# The PUMA's link names (dhlab.grading.puma.LINK_NAMES), marked here for the message catalog:
+# the figures and tables of this notebook show them translated.
+_LINK_NAMES = (N_("base (pedestal)"), N_("trunk"), N_("upper arm"), N_("forearm"), N_("wrist yoke"),
+               N_("wrist"), N_("gripper"))
 
 
 def current_robot():
@@ -79,7 +85,8 @@ def _draw_links(ax, ref, links, label_points, fontsize=10):
     seen = set()
     for k in links:
         P = ref.world_points(k)
-        ax.plot(*P.T, "-o", color=f"C{k}", lw=4, ms=4, label=f"link {k}: {_puma.LINK_NAMES[k]}")
+        ax.plot(*P.T, "-o", color=f"C{k}", lw=4, ms=4,
+                label=_("link {k}: {name}").format(k=k, name=_(_puma.LINK_NAMES[k])))
         labelled = label_points is True or k in (label_points or ())
         for name, p in ref.points[k]:
             if labelled and name not in seen:
@@ -122,7 +129,7 @@ def puma_figure():
         whole.quiver(0, 0, 0, *(0.1 * e), color=color, lw=2.5, arrow_length_ratio=0.3)
         whole.text(*(0.13 * e), f"${'xyz'[k]}_0$", color=color, fontsize=11)
     _square(whole)
-    whole.set_title("home pose (q = 0), world frame 0 at the shoulder S", fontsize=10)
+    whole.set_title(_("home pose (q = 0), world frame 0 at the shoulder S"), fontsize=10)
     _draw_links(wrist, ref, (4, 5, 6), label_points=True, fontsize=11)
     M = points["M"]
     wrist.plot(*np.array([M - [0, 0, 0.1], M]).T, "-", color="C3", lw=4)       # the forearm's top
@@ -130,9 +137,9 @@ def puma_figure():
         _draw_axis(wrist, ref, i, points[anchor], 0.09)
     W = ref.wrist_centre
     _square(wrist, lo=W - np.array([0.1, 0.12, 0.13]), hi=W + np.array([0.1, 0.08, 0.15]))
-    wrist.set_title("the wrist: axes 4, 5, 6 meet at W", fontsize=10)
+    wrist.set_title(_("the wrist: axes 4, 5, 6 meet at W"), fontsize=10)
     fig.legend(*whole.get_legend_handles_labels(), loc="lower center", ncol=4, fontsize=10, frameon=False)
-    fig.suptitle("PUMA 560: joint axes J1…J6, their positive directions and senses (right-hand rule)")
+    fig.suptitle(_("PUMA 560: joint axes J1…J6, their positive directions and senses (right-hand rule)"))
     fig.subplots_adjust(left=0.0, right=0.97, bottom=0.11, top=0.92, wspace=0.05)
     return fig
 
@@ -144,9 +151,10 @@ def _rows_from(namespace, ref):
     rows = _checks._rows(answers, ref.n)
     missing = [f"T{i}" for i, row in enumerate(rows, start=1) if not isinstance(row, _answers.Row)]
     if missing:
-        raise DHLabError(f"answer part 3 first: {', '.join(missing)} "
-                         f"{'is not a transformation' if len(missing) == 1 else 'are not transformations'} "
-                         "Tz(...) @ Tx(...) yet.")
+        raise DHLabError((_("answer part 3 first: {names} is not a transformation Tz(...) @ Tx(...) yet.")
+                          if len(missing) == 1 else
+                          _("answer part 3 first: {names} are not transformations Tz(...) @ Tx(...) yet.")).format(
+            names=", ".join(missing)))
     points = answers.link_points if isinstance(answers.link_points, list) else []
     return rows, points
 
@@ -158,10 +166,10 @@ def robot_of(namespace):
     from ..chain import Link, Move, Robot, Rot
 
     ref = current_robot()
-    rows, _ = _rows_from(namespace, ref)
+    rows, _points = _rows_from(namespace, ref)
     links = []
     for i, row in enumerate(rows, start=1):
-        _, sign, where = row.joint
+        _joint, sign, where = row.joint
         theta = math.radians((row.theta.const + 180) % 360 - 180)
         alpha = math.radians((row.alpha + 180) % 360 - 180)
         kind = ref.kinds[i - 1] if i <= ref.n else None
@@ -172,9 +180,9 @@ def robot_of(namespace):
             first = [Rot("z", theta), Move("z", row.d.const, joint=True, sign=sign)]
             qlim = tuple(ref.qlim[i - 1]) if kind == "P" else None
         else:
-            raise DHLabError(f"T{i} has no joint variable: write θ{i} = q{i} + (constant).")
+            raise DHLabError(_("T{i} has no joint variable: write θ{i} = q{i} + (constant).").format(i=i))
         links.append(Link(first + [Move("x", row.a), Rot("x", alpha)], name=f"T{i}", qlim=qlim))
-    return Robot(links, name=f"your {ref.name}", unit="m")
+    return Robot(links, name=_("your {robot}").format(robot=ref.name), unit="m")
 
 
 def _within_a_turn(qlim) -> tuple:
@@ -232,7 +240,8 @@ def my_robot_figure(namespace, q=None):
     except DHLabError as e:
         return Note(str(e))
     except (ValueError, ArithmeticError, IndexError, TypeError) as e:   # an answer matplotlib cannot draw
-        return Note(f"your robot cannot be drawn ({type(e).__name__}: {e}); check your answers first")
+        return Note(_("your robot cannot be drawn ({kind}: {error}); check your answers first").format(
+            kind=type(e).__name__, error=e))
 
 
 def _pose_text(q, kinds) -> str:
@@ -246,15 +255,16 @@ def _pose_text(q, kinds) -> str:
 def _my_robot_figure(robot, points, ref, q):
     fig, axs = _new_axes(figsize=(11, 5.5), ncols=2)
     lo, hi = _limits(ref)
-    for ax, pose, title in zip(axs, (np.zeros(ref.n), q), ("home pose", "q = " + _pose_text(q, ref.kinds))):
+    for ax, pose, title in zip(axs, (np.zeros(ref.n), q), (_("home pose"), "q = " + _pose_text(q, ref.kinds))):
         R = ref.frames(pose[None])[0]
         ghost = _link_lines(R, [ref.local_points(k).tolist() for k in range(ref.n + 1)])
-        ax.plot(*ghost.T, "-", color="0.75", lw=6, label=f"the {ref.name}")
+        ax.plot(*ghost.T, "-", color="0.75", lw=6, label=_("the {robot}").format(robot=ref.name))
         F = robot.frames(pose)
         mine = _link_lines(F, points)
         if len(mine):
-            ax.plot(*mine.T, "-o", color="C3", lw=2, ms=3, label=f"your links, assembled by your T1…T{ref.n}")
-        ax.plot(*F[:, :3, 3].T, ":", color="C0", lw=1, label="your frame origins")
+            ax.plot(*mine.T, "-o", color="C3", lw=2, ms=3,
+                    label=_("your links, assembled by your T1…T{n}").format(n=ref.n))
+        ax.plot(*F[:, :3, 3].T, ":", color="C0", lw=1, label=_("your frame origins"))
         _square(ax, lo, hi)
         ax.set_title(title)
     fig.legend(*axs[0].get_legend_handles_labels(), loc="lower center", ncol=3, fontsize=9, frameon=False)
@@ -270,7 +280,7 @@ def teach(namespace, **options):
 
     ref = current_robot()
     try:
-        _, points = _rows_from(namespace, ref)
+        _rows, points = _rows_from(namespace, ref)
         robot = robot_of(namespace)
     except DHLabError as e:
         return Note(str(e))
@@ -288,8 +298,9 @@ def teach(namespace, **options):
         panel.view.live.add_moving(state["line"])
         panel.set_q(panel.q)
     except DHLabError as e:
-        return Note(f"your robot cannot be shown in a teach panel: {e}")
+        return Note(_("your robot cannot be shown in a teach panel: {error}").format(error=e))
     except (ValueError, ArithmeticError, IndexError, TypeError) as e:   # an answer the views cannot draw
-        return Note(f"your robot cannot be shown in a teach panel ({type(e).__name__}: {e}); "
-                    f"check your T1…T{ref.n} with check_part3 first")
+        return Note(_("your robot cannot be shown in a teach panel ({kind}: {error}); "
+                      "check your T1…T{n} with check_part3 first").format(kind=type(e).__name__, error=e, n=ref.n))
+
     return panel

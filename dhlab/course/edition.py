@@ -36,14 +36,16 @@ from .edition_text import anchor, headings, relink
 __all__ = ["NOTEBOOKS", "EDITION_NOTEBOOKS", "Edition", "EditionError", "main"]
 
 ROOT = Path(__file__).resolve().parents[2]
-# the notebooks with a Spanish edition (not 08: the assignment is released per student by dhlab-assign)
+# the notebooks with a Spanish edition (08, the assignment, too: dhlab-assign releases each student's
+# personal notebook from it with --language es, see dhlab.grading.release_language)
 NOTEBOOKS = ["01_start_here", "02_homogeneous_matrices", "03_robot_no_tan_elemental",
              "04_pr_mechanism_and_spaces", "05_dh_convention", "06_dh_examples", "07_ssrms",
-             "09_sources_and_errata"]
+             "08_puma_assignment", "09_sources_and_errata"]
 # those whose Spanish edition must be complete and up to date (the tests fail otherwise)
 EDITION_NOTEBOOKS = ["01_start_here", "02_homogeneous_matrices", "03_robot_no_tan_elemental",
                      "04_pr_mechanism_and_spaces",
-                     "05_dh_convention", "06_dh_examples", "07_ssrms", "09_sources_and_errata"]
+                     "05_dh_convention", "06_dh_examples", "07_ssrms", "08_puma_assignment",
+                     "09_sources_and_errata"]
 
 SET_LANGUAGE_EN = 'dhlab.set_language("en")'
 SET_LANGUAGE_ES = 'dhlab.set_language("es")'

@@ -17,7 +17,7 @@ from .edition_text import headings
 __all__ = ["HOME", "home_notebook"]
 
 HOME = "index"
-ASSIGNMENT = "08_puma_assignment"     # released per student by dhlab-assign, not part of the edition
+ASSIGNMENT = "08_puma_assignment"     # in the edition too; dhlab-assign releases it per student
 
 INTRO = """\
 # dhlab · Robot kinematics · Cinemática de robots
@@ -57,7 +57,7 @@ def home_notebook(edition, built) -> nbformat.NotebookNode:
     from .edition import NOTEBOOKS
 
     rows = ["| | English | Español |", "|---|---|---|"]
-    for stem in sorted([*NOTEBOOKS, ASSIGNMENT]):
+    for stem in sorted({*NOTEBOOKS, ASSIGNMENT}):
         if not edition.english_path(stem).exists():
             continue
         english = edition.english(stem)

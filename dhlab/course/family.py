@@ -32,6 +32,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..i18n import N_, _
 from ..validation import DHLabError
 
 __all__ = ["Spec", "FAMILY", "DEFAULT", "spec", "family_names"]
@@ -61,7 +62,7 @@ class Spec:
     home: tuple
     floor: float
     link_names: tuple
-    mounts: tuple = ("floor", "ceiling")
+    mounts: tuple = (N_("floor"), N_("ceiling"))
 
     @property
     def n(self) -> int:
@@ -74,7 +75,8 @@ class Spec:
 
 # Link k is the body that turns with joint k and carries frame k: with the forearm's length in d4,
 # link 4 is the forearm (it rolls with joint 4) and link 3 the elbow.
-_SIX = ("base", "trunk", "upper arm", "elbow", "forearm", "wrist", "flange and gripper")
+_SIX = (N_("base"), N_("trunk"), N_("upper arm"), N_("elbow"),
+        N_("forearm"), N_("wrist"), N_("flange and gripper"))
 
 FAMILY = {s.key: s for s in [
     Spec("puma560", "PUMA 560",
@@ -84,7 +86,8 @@ FAMILY = {s.key: s for s in [
           ("R", 0, 0.4318, 0.0, 90), ("R", 0, 0.0, 0.0, -90), ("R", 0, 0.0, 0.0, 0)),
          ((-160, 160), (-45, 225), (-225, 45), (-110, 170), (-100, 100), (-266, 266)),
          (0, 0, 0, 0, 0, 0), 0.67183,
-         ("base (pedestal)", "trunk", "upper arm", "elbow", "forearm", "wrist", "gripper")),
+         (N_("base (pedestal)"), N_("trunk"), N_("upper arm"), N_("elbow"),
+          N_("forearm"), N_("wrist"), N_("gripper"))),
     Spec("stanford", "Stanford arm",
          "V. Scheinman, 'Design of a computer controlled manipulator', Stanford AIM-177 (1969), fig. 2.3, "
          "as in P. Corke's Robotics Toolbox for Python, models/DH/Stanford.py (limits from there too; "
@@ -93,7 +96,8 @@ FAMILY = {s.key: s for s in [
           ("R", 0, 0.0, 0.0, -90), ("R", 0, 0.0, 0.0, 90), ("R", 0, 0.0, 0.0, 0)),
          ((-170, 170), (-170, 170), (0.3048, 1.27), (-170, 170), (-90, 90), (-170, 170)),
          (0, 90, 0.5, 0, 0, 0), 0.0,
-         ("base", "column", "shoulder", "boom (prismatic)", "wrist roll", "wrist", "flange and gripper")),
+         (N_("base"), N_("column"), N_("shoulder"), N_("boom (prismatic)"),
+          N_("wrist roll"), N_("wrist"), N_("flange and gripper"))),
     Spec("cobra600", "Adept Cobra 600 (SCARA)",
          "Adept Cobra 600, standard DH as in P. Corke's Robotics Toolbox for Python, models/DH/Cobra600.py "
          "(limits of joints 1-3 from there; joint 4's ±180° is this course's choice, the file gives none). "
@@ -101,7 +105,7 @@ FAMILY = {s.key: s for s in [
          (("R", 0, 0.387, 0.325, 0), ("R", 0, 0.0, 0.275, 180), ("P", 0, 0.0, 0.0, 0), ("R", 0, 0.0, 0.0, 0)),
          ((-50, 50), (-88, 88), (0.0, 0.21), (-180, 180)),
          (0, 0, 0.1, 0), 0.0,
-         ("base", "inner link", "outer link", "quill (prismatic)", "tool"), ("floor",)),
+         (N_("base"), N_("inner link"), N_("outer link"), N_("quill (prismatic)"), N_("tool")), (N_("floor"),)),
     Spec("kr5", "KUKA KR5",
          "KUKA KR5 arc, standard DH by G. Sinha (IIT Kanpur) in P. Corke's Robotics Toolbox for Python, "
          "models/DH/KR5.py (metres; limits from there). Pictured with q3 = -90° (the forearm level; at the "
@@ -126,7 +130,8 @@ FAMILY = {s.key: s for s in [
           ("R", 0, 0.10915, 0.0, 90), ("R", 0, 0.09465, 0.0, -90), ("R", 0, 0.0823, 0.0, 0)),
          ((-360, 360),) * 6,
          (0, -90, 0, -90, 0, 0), 0.0,
-         ("base", "shoulder", "upper arm", "forearm", "wrist 1", "wrist 2", "wrist 3 and gripper")),
+         (N_("base"), N_("shoulder"), N_("upper arm"), N_("forearm"),
+          N_("wrist 1"), N_("wrist 2"), N_("wrist 3 and gripper"))),
     Spec("lrmate200ic", "Fanuc LR Mate 200iC",
          "FANUC LR Mate 200iC, standard DH from ARTE (A Robotics Toolbox for Education, Univ. Miguel "
          "Hernández), robots/FANUC/LR_MATE_200iC/parameters.m (metres; limits from there).",
@@ -145,5 +150,6 @@ def family_names() -> list:
 def spec(key: str) -> Spec:
     """The published robot ``key`` (see :data:`FAMILY`); a clear error for an unknown key."""
     if key not in FAMILY:
-        raise DHLabError(f"no robot {key!r} in the assignment family: choose one of {', '.join(family_names())}.")
+        raise DHLabError(_("no robot {key} in the assignment family: choose one of {names}.").format(
+            key=repr(key), names=", ".join(family_names())))
     return FAMILY[key]

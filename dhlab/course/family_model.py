@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..i18n import _
 from ..lines import Line
 from ..lines import relation as line_relation
 from ..validation import DHLabError
@@ -143,7 +144,7 @@ class AssignmentRobot:
     def end_text(self) -> str:
         """How the feedback names frame n's origin: the end point of the axes table."""
         from .family_views import _end_name
-        return f"the end point {_end_name(self)} of the axes table"
+        return _("the end point {name} of the axes table").format(name=_end_name(self))
 
     def frames(self, Q) -> np.ndarray:
         """The reference solution's frames 0…n at configurations Q (N, n)."""
@@ -156,7 +157,7 @@ class AssignmentRobot:
         return F[:, :-1, :3, 3], F[:, :-1, :3, 2] * signs[None, :, None]
 
     def world_points(self, k: int) -> np.ndarray:
-        return np.array([p for _, p in self.points[k]])
+        return np.array([p for _name, p in self.points[k]])
 
     def local_points(self, k: int) -> np.ndarray:
         """Link k's points in the reference DH frame k (one valid answer of part 2)."""
@@ -278,7 +279,8 @@ def rows_from_frames(robot, frames) -> list:
         a = float(A[0, 3] * math.cos(theta) + A[1, 3] * math.sin(theta))
         check = dh_frames([(1, None, theta, d, a, alpha)], "R", np.zeros((1, 1)))[0, 1]
         if not np.allclose(check, A, atol=1e-9):
-            raise DHLabError(f"frames {k - 1} and {k} are not related by Tz[θ, d]·Tx[α, a]: not DH frames.")
+            raise DHLabError(_("frames {j} and {k} are not related by Tz[θ, d]·Tx[α, a]: not DH frames.").format(
+                j=k - 1, k=k))
         sign = 1 if frames[k - 1][:3, 2] @ robot.axes[k - 1].direction > 0 else -1
         rows.append((sign, k - 1, theta, d, a, alpha))
     return rows

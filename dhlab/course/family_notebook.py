@@ -19,6 +19,7 @@ import json
 import re
 
 from ..grading import variants as V
+from ..i18n import _
 from .family_model import AssignmentRobot
 
 __all__ = ["SEAM_CELL_ID", "use_variant", "active_robot", "clear_variant", "seam_source", "release_notebook",
@@ -107,31 +108,40 @@ def _intro(robot, record) -> str:
     from .family import spec
     s = spec(record["variant"]["family"])
     n, kinds = robot.n, robot.kinds
-    joints = ", ".join(f"joint {i} {'prismatic' if k == 'P' else 'revolute'}" for i, k in enumerate(kinds, 1)
-                       if k == "P") or "all revolute"
-    mount = "hangs from a ceiling plate" if robot.mount["mount"] == "ceiling" else "stands on a floor plate"
-    six = ("" if n == 6 else
-           f"\n\n**Your robot has {n} joints**: `x_cases` has {n - 1} words, the transformations are "
-           f"T1…T{n}, frame {n} is the end effector's.")
+    joints = ", ".join(_("joint {i} prismatic").format(i=i) for i, k in enumerate(kinds, 1)
+                       if k == "P") or _("all revolute")
+    mount = _("hangs from a ceiling plate") if robot.mount["mount"] == "ceiling" else _("stands on a floor plate")
+    six = ("" if n == 6 else "\n\n" + _(
+        "**Your robot has {n} joints**: `x_cases` has {words} words, the transformations are "
+        "T1…T{n}, frame {n} is the end effector's.").format(n=n, words=n - 1))
     who = html.escape(record["student_id"])
-    return (f"## Your robot\n\nThis notebook is for **{who}**. Your robot is {_a(robot.name)} **{robot.name}**: "
-            f"{_a(s.name)} {s.name} whose lengths, home pose, positive senses and mounting were changed for you, so its DH "
-            f"table is yours to work out — it is in no book. It has {n} joints ({joints}) and {mount}.\n\n"
-            "The figure shows it in its **home pose** ($q_i = 0$ for every joint). Each joint axis is dashed; its "
-            "black arrow is the axis's **positive direction**: a revolute joint turns by the right-hand rule about "
-            "it (purple curled arrow), a prismatic joint slides along it (purple arrow). The tables give the "
-            "axes and the links' points in numbers (metres, world frame).\n\n"
-            "What the exercise fixes:\n\n"
-            "* **Frame 0** is the world frame drawn ($x_0$ red, $y_0$ green, $z_0$ blue): its origin lies on "
-            "joint 1's axis and $z_0$ along it. Link 0, the base, is given in it.\n"
-            "* **The joint variables** $q_i$ are measured from the home pose, positive as the arrows show.\n"
-            f"* **Frame {n}**, the end effector's, has its origin at the end point in the axes table, and "
-            f"$z_{n}$ along joint {n}'s axis." + six)
+    return (_("## Your robot\n\nThis notebook is for **{who}**. Your robot is {robot}: "
+              "{family} whose lengths, home pose, positive senses and mounting were changed for you, "
+              "so its DH table is yours to work out — it is in no book. It has {n} joints ({joints}) and {mount}."
+              ).format(who=who, robot=_a(f"**{_variant_name(robot.name)}**"), family=_a(s.name), n=n, joints=joints,
+                       mount=mount) + "\n\n" +
+            _("The figure shows it in its **home pose** ($q_i = 0$ for every joint). Each joint axis is dashed; its "
+              "black arrow is the axis's **positive direction**: a revolute joint turns by the right-hand rule about "
+              "it (purple curled arrow), a prismatic joint slides along it (purple arrow). The tables give the "
+              "axes and the links' points in numbers (metres, world frame).") + "\n\n" +
+            _("What the exercise fixes:") + "\n\n" +
+            _("* **Frame 0** is the world frame drawn ($x_0$ red, $y_0$ green, $z_0$ blue): its origin lies on "
+              "joint 1's axis and $z_0$ along it. Link 0, the base, is given in it.") + "\n" +
+            _("* **The joint variables** $q_i$ are measured from the home pose, positive as the arrows show.") + "\n" +
+            _("* **Frame {n}**, the end effector's, has its origin at the end point in the axes table, and "
+              "$z_{n}$ along joint {n}'s axis.").format(n=n) + six)
+
+
+def _variant_name(name: str) -> str:
+    """'UR5 · variant 49540b' in the notebook's language (the name the variant gives it)."""
+    return name.replace(" · variant ", _(" · variant "))
 
 
 def _a(name: str) -> str:
-    """The article before a robot's name ('an Adept Cobra 600', 'a KUKA KR 5')."""
-    return "an" if name[:1].upper() in "AEIOU" else "a"
+    """A robot's name with its article ('an Adept Cobra 600', 'a KUKA KR 5'; in Spanish 'un …')."""
+    vowel = name.lstrip("*")[:1].upper() in "AEIOU"
+    return (_("an {name}") if vowel else _("a {name}")).format(name=name)
+
 
 
 _WORDS = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight"}
@@ -203,14 +213,14 @@ def _part2_stub(robot, source: str) -> str | None:
     if start is not None and end is not None:              # the stub is a dict to fill in
         body = []
         for k, link in enumerate(robot.points):
-            names = ", ".join(name for name, _ in link)
+            names = ", ".join(name for name, _point in link)
             where = "in frame 0 (the world frame)" if k == 0 else f"in frame {k}"
             body.append(f"    {k}: ...,   # {names:<18} {where}")
         return "\n".join(lines[:start + 1] + body + lines[end:])
     comments = _comments_only(source)
     if comments is None:
         return None
-    links = [f"link {k}: " + ", ".join(name for name, _ in link) + (" (in frame 0, the world frame)" if k == 0 else "")
+    links = [f"link {k}: " + ", ".join(name for name, _point in link) + (" (in frame 0, the world frame)" if k == 0 else "")
              for k, link in enumerate(robot.points)]
     rows, row = [], "#  "
     for item in links:
@@ -271,7 +281,7 @@ def release_notebook(template: dict, record: dict, figures: bool = True) -> tupl
     setup = _find(cells, "setup")
     if setup is None:
         setup = next((i for i, c in enumerate(cells) if c.get("cell_type") == "code"), -1)
-        notes.append("no 'setup' cell: the robot cell goes after the first code cell")
+        notes.append(_("no 'setup' cell: the robot cell goes after the first code cell"))
     seam = _code(SEAM_CELL_ID, seam_source(record), "your_robot")
     replaced = {}
     for gid, text, obj, is_fig in (("robot_figure", "my_robot.figure()", robot.figure if figures else None, True),
@@ -280,7 +290,7 @@ def release_notebook(template: dict, record: dict, figures: bool = True) -> tupl
         i = _find(cells, gid)
         outputs = _outputs(obj(), is_fig) if obj is not None else []
         if i is None:
-            notes.append(f"no {gid!r} cell in the template: added to 'Your robot'")
+            notes.append(_("no {cell!r} cell in the template: added to 'Your robot'").format(cell=gid))
             replaced[gid] = _code(f"dhlab-{gid}", text, gid, outputs)
             continue
         _set_source(cells[i], text)
@@ -295,17 +305,17 @@ def release_notebook(template: dict, record: dict, figures: bool = True) -> tupl
     extra += list(replaced.values())
     title = _source(cells[0]) if cells and cells[0].get("cell_type") == "markdown" else ""
     if title.startswith("# "):
-        first, _, rest = title.partition("\n")
+        first, _sep, rest = title.partition("\n")
         _set_source(cells[0], f"# {first[2:].split('·')[0].strip()} · The DH assignment: your own "
                               f"{_spec_name(record)}\n{rest}")
     else:
-        notes.append("no title cell: the notebook's title was left as in the template")
+        notes.append(_("no title cell: the notebook's title was left as in the template"))
     for gid, fix in (("part1_answers", _part1_stub), ("part2_answers", _part2_stub),
                      ("part3_answers", _part3_stub)):
         i = _find(cells, gid)
         new = fix(robot, _source(cells[i])) if i is not None else None
         if new is None:
-            notes.append(f"the {gid!r} cell was left as in the template")
+            notes.append(_("the {cell!r} cell was left as in the template").format(cell=gid))
         else:
             _set_source(cells[i], new)
     name = _spec_name(record)

@@ -12,6 +12,8 @@ import html
 
 import numpy as np
 
+from ..i18n import _
+
 __all__ = ["axes_figure", "axes_table", "points_table", "Table"]
 
 
@@ -57,10 +59,11 @@ def axes_table(robot) -> Table:
     rows = []
     for i, (axis, kind, (name, p)) in enumerate(zip(robot.axes, robot.kinds, _anchors(robot)), start=1):
         where = f"{name} = {_xyz(p)}" if name else _xyz(p)
-        rows.append((f"joint {i}", "revolute" if kind == "R" else "prismatic", where, _xyz(axis.direction)))
-    rows.append(("end effector", "", f"{_end_name(robot)} = {_xyz(robot.end_point)}", ""))
-    return Table(f"{robot.name}: joint axes at the home pose (world frame 0, metres)",
-                 ("joint", "kind", "passes through", "positive direction"), rows)
+        rows.append((_("joint {i}").format(i=i), _("revolute") if kind == "R" else _("prismatic"), where,
+                     _xyz(axis.direction)))
+    rows.append((_("end effector"), "", f"{_end_name(robot)} = {_xyz(robot.end_point)}", ""))
+    return Table(_("{robot}: joint axes at the home pose (world frame 0, metres)").format(robot=robot.name),
+                 (_("joint"), _("kind"), _("passes through"), _("positive direction")), rows)
 
 
 def _end_name(robot) -> str:
@@ -73,10 +76,11 @@ def _end_name(robot) -> str:
 
 def points_table(robot) -> Table:
     """The points that draw each link, in the world frame at the home pose (metres)."""
-    rows = [(f"{k} ({robot.link_names[k]})", name, _xyz(p))
+    rows = [(f"{k} ({_(robot.link_names[k])})", name, _xyz(p))
             for k, link in enumerate(robot.points) for name, p in link]
-    return Table(f"{robot.name}: link points at the home pose (world frame 0, metres): give them, in this "
-                 "order, in each link's own DH frame", ("link", "point", "world (x, y, z)"), rows)
+    return Table(_("{robot}: link points at the home pose (world frame 0, metres): give them, in this "
+                   "order, in each link's own DH frame").format(robot=robot.name),
+                 (_("link"), _("point"), _("world (x, y, z)")), rows)
 
 
 # --- the picture ----------------------------------------------------------------------------------
@@ -153,15 +157,15 @@ def _draw(ax, robot, links, joints, size, span, labelled, near=None):
     """Links ``links`` with their labelled points, and the axes of ``joints`` (indices)."""
     for k in links:
         P = robot.world_points(k)
-        name = robot.link_names[k] if k < len(robot.link_names) else f"link {k}"
+        name = _(robot.link_names[k]) if k < len(robot.link_names) else _("link {k}").format(k=k)
         if k == robot.n:                                # the gripper: flange path, then the fingers
             body, fingers = P[:-4], P[-4:]
             if len(body):
                 ax.plot(*np.vstack([body, fingers[[1, 2]].mean(axis=0)]).T, "-o", color=f"C{k}", lw=4, ms=4,
-                        label=f"link {k}: {name}")
+                        label=_("link {k}: {name}").format(k=k, name=name))
             ax.plot(*fingers.T, "-", color=f"C{k}", lw=3)
         else:
-            ax.plot(*P.T, "-o", color=f"C{k}", lw=4, ms=4, label=f"link {k}: {name}")
+            ax.plot(*P.T, "-o", color=f"C{k}", lw=4, ms=4, label=_("link {k}: {name}").format(k=k, name=name))
         for label, p in robot.points[k]:
             if label not in labelled:
                 labelled.add(label)
@@ -204,22 +208,23 @@ def axes_figure(robot, elev: float = 22, azim: float = -58, figsize=None):
     ax.plot(*(plate + sq).T, "-", color="0.55", lw=1)
     if np.linalg.norm(plate) > 1e-9:                     # what holds the plate: a pedestal, a ceiling
         ax.plot(*np.array([np.zeros(3), plate]).T, ":", color="0.55", lw=1)
-    ax.text(*(plate + sq[1]), robot.mount["mount"], fontsize=8, color="0.4")
+    mount = robot.mount["mount"]                      # "floor" or "ceiling": marked N_ in family.py
+    ax.text(*(plate + sq[1]), _(mount), fontsize=8, color="0.4")
     _draw(ax, robot, range(robot.n + 1), range(robot.n), size, span, set())
     for j, color in enumerate(("tab:red", "tab:green", "tab:blue")):
         e = np.eye(3)[j] * 0.14 * span
         ax.quiver(0, 0, 0, *e, color=color, lw=2.5, arrow_length_ratio=0.3)
         ax.text(*(1.15 * e), f"${'xyz'[j]}_0$", color=color, fontsize=11)
     _cube(ax, lo, hi, elev, azim)
-    ax.set_title("home pose (q = 0), world frame 0", fontsize=10)
+    ax.set_title(_("home pose (q = 0), world frame 0"), fontsize=10)
     if wrist:
         links, joints, half = wrist
         close = fig.add_subplot(1, 2, 2, projection="3d")
         _draw(close, robot, links, joints, 0.9 * half, 2 * half, set(), near=robot.end_point)
         _cube(close, robot.end_point - half, robot.end_point + half, elev, azim)
-        close.set_title(f"the wrist: axes J{joints[0] + 1}…J{robot.n}", fontsize=10)
-    fig.suptitle(f"{robot.name}: joint axes J1…J{robot.n} and their positive senses (right-hand rule)",
-                 fontsize=11)
+        close.set_title(_("the wrist: axes J{first}…J{n}").format(first=joints[0] + 1, n=robot.n), fontsize=10)
+    fig.suptitle(_("{robot}: joint axes J1…J{n} and their positive senses (right-hand rule)").format(
+        robot=robot.name, n=robot.n), fontsize=11)
     fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=4 if not wrist else 7, fontsize=8,
                frameon=False)
     fig.subplots_adjust(left=0.02, right=0.97, bottom=0.1, top=0.9, wspace=0.05)

@@ -5,6 +5,7 @@ import math
 
 import numpy as np
 
+from ..i18n import _
 from ..validation import DHLabError, as_length, as_text, describe
 from ..views.figures import new_figure
 from ..views.triads import draw_triad, free_direction, letter_points
@@ -77,9 +78,9 @@ def frame_pairs_figure(robot, q=None, length: float | None = None, titles=None):
 
 
 def _checked_length(length) -> float:
-    length = as_length(length, "length (of the triads)")
+    length = as_length(length, _("length (of the triads)"))
     if not length > 0:
-        raise DHLabError(f"length (of the triads) must be positive, got {length:g}.")
+        raise DHLabError(_("length (of the triads) must be positive, got {length:g}.").format(length=length))
     return length
 
 
@@ -87,7 +88,8 @@ def _checked_titles(titles, n: int):
     if titles is None:
         return None
     if isinstance(titles, (str, bytes)) or not hasattr(titles, "__len__") or len(titles) != n:
-        raise DHLabError(f"titles must be a list of {n} texts, one per row of the table; got {describe(titles)}.")
+        raise DHLabError(_("titles must be a list of {n} texts, one per row of the table; got {value}.").format(
+            n=n, value=describe(titles)))
     return [as_text(t, f"titles[{k}]") for k, t in enumerate(titles)]
 
 
@@ -95,7 +97,8 @@ def row_title(robot, i: int) -> str:
     """"row i:  θi = qi − 90°": the row's θ with its offset, for a DH link (else "row i")."""
     link = robot.links[i - 1]
     if not hasattr(link, "offset") or not link.is_revolute:
-        return f"row {i}"
+        return _("row {i}").format(i=i)
     offset = np.degrees(float(link.offset))
     sign = "+" if offset > 0 else "−"
-    return f"row {i}:  θ{i} = q{i}" + (f" {sign} {abs(offset):g}°" if abs(offset) > 1e-9 else "")
+    return _("row {i}").format(i=i) + f":  θ{i} = q{i}" + (f" {sign} {abs(offset):g}°" if abs(offset) > 1e-9 else "")
+

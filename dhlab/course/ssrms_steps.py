@@ -22,12 +22,20 @@ import numpy as np
 
 from .. import robots
 from ..assign import dh_assignment, joint_axes
+from ..i18n import N_, _
 from ..lines import Line
 from .exercises_dh_common import _as_robot
 
-__all__ = ["CASE_NAMES", "XStep", "z_axes", "x_steps", "frames_b", "assignment"]
+__all__ = ["CASE_NAMES", "case_name", "XStep", "z_axes", "x_steps", "frames_b", "assignment"]
 
-CASE_NAMES = {1: "case 1: the axes intersect", 2: "case 2: the axes are parallel", 3: "case 3: the axes are skew"}
+# Paso 2's three cases (English here, for the catalog; shown translated by case_name)
+CASE_NAMES = {1: N_("case 1: the axes intersect"), 2: N_("case 2: the axes are parallel"),
+              3: N_("case 3: the axes are skew")}
+
+
+def case_name(case: int) -> str:
+    """Paso 2's case ``case`` (1, 2, 3) in words, in the course's language."""
+    return _(CASE_NAMES[case])
 
 
 @dataclass(frozen=True)
@@ -46,6 +54,21 @@ class XStep:
     def length(self) -> float:
         """The common normal's length between the two axes: |a_i| of the table."""
         return float(np.linalg.norm(self.origin - self.foot))
+
+    def __str__(self):
+        """One line of Paso 2, in the course's language (``print(step)``)."""
+        relation = _(_RELATIONS.get(self.relation, self.relation))
+        return _("x{i}: case {case}, {relation}, normal from {foot} to B{i} = {origin}, length {length:g}, "
+                 "x{i} = {x}").format(i=self.i, case=self.case, relation=relation, foot=_point(self.foot),
+                                      origin=_point(self.origin), length=self.length, x=_point(self.x))
+
+
+_RELATIONS = {"intersecting": N_("intersecting"), "parallel": N_("parallel"), "skew": N_("skew")}
+
+
+def _point(v) -> str:
+    """(0, 6, -3.5): a point or direction, short (rounding noise shown as 0)."""
+    return "(" + ", ".join(f"{round(float(c), 9) + 0.0:g}" for c in v) + ")"
 
 
 def assignment(robot=None):

@@ -17,6 +17,10 @@
 * :mod:`dhlab.grading.variants` / :mod:`dhlab.grading.release` — a personal robot for every student,
   signed with the teacher's secret (``dhlab-assign release``), and
   :mod:`dhlab.grading.grade_variants` — each submission graded against its student's own robot;
+* :mod:`dhlab.grading.language` — the grader's two languages (the teacher's for the gradebook and the
+  command line, each student's for the feedback: ``--language``, ``DHLAB_LANGUAGE``) and
+  :mod:`dhlab.grading.release_language` — each released notebook in its student's language (a roster
+  column ``language``/``idioma``), the Spanish text from the Spanish edition's catalog of notebook 8;
 * :mod:`dhlab.grading.generate` — the student notebook from the source notebook
   (package data: ``dhlab/grading/data/08_puma_assignment.ipynb``);
 * :mod:`dhlab.grading.selfcheck` — one kernel started as the submissions' will be, before any runs;

@@ -26,6 +26,12 @@ import math
 import re
 from dataclasses import dataclass, field
 
+try:
+    from .language import _
+except ImportError:          # loaded as a script by the grader's runner (runner.py), which only encodes answers
+    def _(message: str) -> str:
+        return message
+
 __all__ = ["ANSWER_NAMES", "N_JOINTS", "MAX_JOINTS", "NOT_ANSWERED", "Unreadable", "Answers", "Row", "Term",
            "to_plain", "encode_json", "parse_answers", "parse_json", "answers_from_namespace", "MAX_JSON_BYTES"]
 
@@ -188,7 +194,7 @@ def to_plain(value, _depth=0, _budget=None):
         if len(value) > 500:
             return {"__type__": "too big", "repr": "a dict of %d items" % len(value)}
         items = list(value.items())
-        if all(isinstance(k, str) for k, _ in items) and not {"__dict__", "__type__", "__dhlab__"} & set(value):
+        if all(isinstance(k, str) for k, _value in items) and not {"__dict__", "__type__", "__dhlab__"} & set(value):
             return {k[:100]: to_plain(v, _depth + 1, _budget) for k, v in items}
         return {"__dict__": [[to_plain(k, _depth + 1, _budget), to_plain(v, _depth + 1, _budget)]
                              for k, v in items]}
@@ -260,13 +266,14 @@ def answers_from_namespace(namespace, n: int = N_JOINTS) -> Answers:
 def parse_json(text: str, n: int = N_JOINTS) -> Answers:
     """:func:`parse_answers` of a JSON text, refusing texts that are too big or not JSON."""
     if len(text) > MAX_JSON_BYTES:
-        raise ValueError(f"the answers are {len(text)} bytes of JSON, more than {MAX_JSON_BYTES}")
+        raise ValueError(_("the answers are {size} bytes of JSON, more than {limit}").format(
+            size=len(text), limit=MAX_JSON_BYTES))
     try:
         raw = json.loads(text)
     except (ValueError, RecursionError) as e:
-        raise ValueError(f"the answers are not valid JSON ({str(e)[:80]})") from None
+        raise ValueError(_("the answers are not valid JSON ({error})").format(error=str(e)[:80])) from None
     if not isinstance(raw, dict):
-        raise ValueError("the answers are not a JSON object")
+        raise ValueError(_("the answers are not a JSON object"))
     return parse_answers(raw, n)
 
 
@@ -297,7 +304,7 @@ def _read(raw, name, reader):
     except _Bad as e:
         return Unreadable(str(e))
     except (TypeError, ValueError, KeyError, IndexError, AttributeError, OverflowError, RecursionError):
-        return Unreadable(f"cannot read {_show(value)}")
+        return Unreadable(_("cannot read {value}").format(value=_show(value)))
 
 
 class _Bad(Exception):
@@ -314,7 +321,7 @@ def _is_ellipsis_only(value) -> bool:
         return all(_is_ellipsis_only(v) for v in value)
     items = _dict_items(value)
     if items is not None:
-        return all(_is_ellipsis_only(v) for _, v in items)
+        return all(_is_ellipsis_only(v) for _key, v in items)
     return False
 
 
@@ -344,21 +351,22 @@ def _show(value) -> str:
 
 def _number(value, what: str) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise _Bad(f"{what} must be a number, got {_show(value)}")
+        raise _Bad(_("{what} must be a number, got {value}").format(what=what, value=_show(value)))
     number = float(value)
     if not math.isfinite(number):
-        raise _Bad(f"{what} must be a finite number, got {value}")
+        raise _Bad(_("{what} must be a finite number, got {value}").format(what=what, value=value))
     if abs(number) > MAX_NUMBER:
-        raise _Bad(f"{what} is {number:g}: no length (metres) or angle (degrees) of this robot is that big")
+        raise _Bad(_("{what} is {number}: no length (metres) or angle (degrees) of this robot is that big").format(
+            what=what, number=f"{number:g}"))
     return number
 
 
 def _count(value) -> int:
     if isinstance(value, str) and re.fullmatch(r"\s*\d+\s*", value):
         value = int(value)
-    number = _number(value, "a count")
+    number = _number(value, _("a count"))
     if number != int(number) or number < 0:
-        raise _Bad(f"must be a whole number, got {_show(value)}")
+        raise _Bad(_("must be a whole number, got {value}").format(value=_show(value)))
     return int(number)
 
 
@@ -374,11 +382,12 @@ def _joint_types(value) -> list:
             return [ch.upper() for ch in words[0]]
         value = words
     if not isinstance(value, list):
-        raise _Bad(f"give one letter per joint, e.g. 'RRP', got {_show(value)}")
+        raise _Bad(_("give one letter per joint, e.g. 'RRP', got {value}").format(value=_show(value)))
     out = []
     for item in value:
         if not isinstance(item, str) or item.strip().lower() not in _TYPE_WORDS:
-            raise _Bad(f"{_show(item)} is not a joint type: use 'R' (revolute) or 'P' (prismatic)")
+            raise _Bad(_("{value} is not a joint type: use 'R' (revolute) or 'P' (prismatic)").format(
+                value=_show(item)))
         out.append(_TYPE_WORDS[item.strip().lower()])
     return out
 
@@ -402,10 +411,10 @@ def _case(item):
     if isinstance(item, (int, float)) and not isinstance(item, bool):
         item = str(int(item)) if float(item).is_integer() else str(item)
     if not isinstance(item, str):
-        raise _Bad(f"{_show(item)} is not a case: use 'intersect', 'parallel' or 'skew'")
+        raise _Bad(_("{value} is not a case: use 'intersect', 'parallel' or 'skew'").format(value=_show(item)))
     key = re.sub(r"\s+", " ", item.strip().lower().replace("_", " "))
     if key not in _CASE_WORDS:
-        raise _Bad(f"{item!r} is not a case: use 'intersect', 'parallel' or 'skew'")
+        raise _Bad(_("{value} is not a case: use 'intersect', 'parallel' or 'skew'").format(value=repr(item)))
     return _CASE_WORDS[key]
 
 
@@ -416,13 +425,14 @@ def _x_cases(value, n: int) -> list:
         for k, v in items:
             digits = re.sub(r"\D", "", k) if isinstance(k, str) else k
             if digits == "" or isinstance(digits, bool) or not isinstance(digits, (int, str)):
-                raise _Bad(f"the keys of x_cases must be the numbers i = 1…{n - 1}, got {_show(k)}")
+                raise _Bad(_("the keys of x_cases must be the numbers i = 1…{last}, got {value}").format(
+                    last=n - 1, value=_show(k)))
             pairs[_count(int(digits))] = v
         value = [pairs.get(i) for i in range(1, max(pairs) + 1)] if pairs else []
     if isinstance(value, str):
         value = [w for w in re.split(r"\s*[,;]\s*", value.strip()) if w]
     if not isinstance(value, list):
-        raise _Bad(f"give a list with one case per i, got {_show(value)}")
+        raise _Bad(_("give a list with one case per i, got {value}").format(value=_show(value)))
     return [_case(item) for item in value]
 
 
@@ -430,9 +440,10 @@ def _point(value, where: str) -> tuple:
     if isinstance(value, list) and len(value) in (3, 4) and all(isinstance(v, list) and len(v) == 1 for v in value):
         value = [v[0] for v in value]                  # a column (3x1 array or sympy Matrix)
     if isinstance(value, list) and len(value) == 4 and value[3] in (1, 1.0):
-        raise _Bad(f"{where} has 4 numbers; a point has 3: drop the trailing 1 of the homogeneous form")
+        raise _Bad(_("{where} has 4 numbers; a point has 3: drop the trailing 1 of the homogeneous form").format(
+            where=where))
     if not isinstance(value, list) or len(value) != 3:
-        raise _Bad(f"{where} must be a point (x, y, z), got {_show(value)}")
+        raise _Bad(_("{where} must be a point (x, y, z), got {value}").format(where=where, value=_show(value)))
     return tuple(_number(v, where) for v in value)
 
 
@@ -446,11 +457,11 @@ def _link_points(value, n: int) -> list:
             if isinstance(k, str) and re.fullmatch(r"\D*\d+\s*", k):      # 3, "3", "link3"
                 k = int(re.sub(r"\D", "", k))
             if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k <= 50:
-                raise _Bad(f"the keys must be link numbers 0…{n}, got {_show(k)}")
+                raise _Bad(_("the keys must be link numbers 0…{n}, got {value}").format(n=n, value=_show(k)))
             pairs[k] = v
         value = [pairs.get(k) for k in range(max(pairs) + 1)] if pairs else []
     if not isinstance(value, list):
-        raise _Bad(f"give the points of links 0…{n}, got {_show(value)}")
+        raise _Bad(_("give the points of links 0…{n}, got {value}").format(n=n, value=_show(value)))
     out = []
     for k, pts in enumerate(value):
         if _is_ellipsis_only(pts):
@@ -458,8 +469,8 @@ def _link_points(value, n: int) -> list:
             continue
         try:
             if not isinstance(pts, list):
-                raise _Bad(f"link {k} must be a list of points (x, y, z), got {_show(pts)}")
-            out.append([_point(p, f"link {k}, point {j + 1}") for j, p in enumerate(pts)])
+                raise _Bad(_("link {k} must be a list of points (x, y, z), got {value}").format(k=k, value=_show(pts)))
+            out.append([_point(p, _("link {k}, point {j}").format(k=k, j=j + 1)) for j, p in enumerate(pts)])
         except _Bad as e:
             out.append(Unreadable(str(e)))
     return out
@@ -474,24 +485,24 @@ def _term(value, what: str) -> Term:
     if _dhlab(value, "JointTerm"):
         joint, sign = value.get("joint"), value.get("sign", 1)
         if isinstance(joint, bool) or not isinstance(joint, int) or not 1 <= joint <= 50:
-            raise _Bad(f"{what}: joint variable q{joint} does not exist")
+            raise _Bad(_("{what}: joint variable q{joint} does not exist").format(what=what, joint=joint))
         if sign not in (1, -1):
-            raise _Bad(f"{what}: the joint variable must appear as +q or -q")
+            raise _Bad(_("{what}: the joint variable must appear as +q or -q").format(what=what))
         return Term(_number(value.get("const", 0), what), joint, int(sign))
     return Term(_number(value, what))
 
 
 def _row(value) -> Row:
     if _dhlab(value, "ZFactor", "XFactor"):
-        raise _Bad("it is a single factor: write T_i = Tz(θ, d) @ Tx(α, a)")
+        raise _Bad(_("it is a single factor: write T_i = Tz(θ, d) @ Tx(α, a)"))
     if not _dhlab(value, "DHTransform") or not _dhlab(value.get("z"), "ZFactor") \
             or not _dhlab(value.get("x"), "XFactor"):
-        raise _Bad(f"write it as Tz(θ, d) @ Tx(α, a), got {_show(value)}")
+        raise _Bad(_("write it as Tz(θ, d) @ Tx(α, a), got {value}").format(value=_show(value)))
     z, x = value["z"], value["x"]
     theta, d = _term(z.get("theta"), "θ"), _term(z.get("d"), "d")
     alpha, a = _term(x.get("alpha"), "α"), _term(x.get("a"), "a")
     if alpha.joint is not None or a.joint is not None:
-        raise _Bad("α and a are constants: the joint variable goes in θ (or in d for a prismatic joint)")
+        raise _Bad(_("α and a are constants: the joint variable goes in θ (or in d for a prismatic joint)"))
     return Row(theta, d, alpha.const, a.const)
 
 
@@ -499,7 +510,8 @@ def _chain(value, n: int) -> list:
     if _dhlab(value, "DHTransform"):
         return [_row(value)]
     if not _dhlab(value, "DHChain") or not isinstance(value.get("transforms"), list):
-        raise _Bad(f"write it as {' @ '.join(f'T{i}' for i in range(1, n + 1))}, got {_show(value)}")
+        raise _Bad(_("write it as {chain}, got {value}").format(chain=" @ ".join(f"T{i}" for i in range(1, n + 1)),
+                                                             value=_show(value)))
     if not value["transforms"]:
-        raise _Bad("the chain has no transformations")
+        raise _Bad(_("the chain has no transformations"))
     return [_row(v) for v in value["transforms"]]

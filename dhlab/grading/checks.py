@@ -35,6 +35,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import puma
+from .language import N_, _, case_word
 from .answers import NOT_ANSWERED, Answers, Row, Unreadable
 from .part2 import link_items
 from .part3 import Analysis, Item, analyse, chain_matches, matrix, random_configurations, rows_of
@@ -43,8 +44,8 @@ __all__ = ["POINTS", "Item", "PartResult", "Report", "check_part1", "check_part2
            "check_all", "random_configurations", "chain_matches"]
 
 POINTS = {"part1": 2, "part2": 3, "part3": 5}
-TITLES = {"part1": "the sketch", "part2": "each link in its own frame",
-          "part3": "the transformations and their chain"}
+TITLES = {"part1": N_("the sketch"), "part2": N_("each link in its own frame"),
+          "part3": N_("the transformations and their chain")}
 
 
 @dataclass
@@ -60,7 +61,7 @@ class PartResult:
 
     @property
     def title(self) -> str:
-        return TITLES[self.key]
+        return _(TITLES[self.key])
 
     @property
     def answered(self) -> bool:
@@ -77,16 +78,17 @@ class PartResult:
 
     def lines(self) -> list:
         number = self.key[-1]
-        head = f"Part {number} ({self.title}): {_num(self.score)}/{self.points} points"
+        head = _("Part {number} ({title}): {score}/{points} points").format(
+            number=number, title=self.title, score=_num(self.score), points=self.points)
         if not self.answered:
-            return [head + (f", not read: {self.unread}" if self.unread else ", not answered")]
+            return [head + (_(", not read: {why}").format(why=self.unread) if self.unread else _(", not answered"))]
         out = [head]
         for item in self.items:
             mark = {True: "✓", False: "✗", None: "·"}[item.ok]
             out.append(f"  {mark} {item.label}: {item.message}" if item.message else f"  {mark} {item.label}")
         out += [f"  {note}" for note in self.notes]
         if self.unread:
-            out.append(f"  (not all read: {self.unread})")
+            out.append("  " + _("(not all read: {why})").format(why=self.unread))
         return out
 
     def text(self) -> str:
@@ -125,7 +127,8 @@ class Report:
         return next(p for p in self.parts if p.key == key)
 
     def text(self) -> str:
-        blocks = [f"{self.robot} assignment: {_num(self.score)}/{self.max_score} points"]
+        blocks = [_("{robot} assignment: {score}/{max_score} points").format(
+            robot=self.robot, score=_num(self.score), max_score=self.max_score)]
         blocks += [p.text() for p in self.parts]
         return "\n\n".join(blocks) + "\n"
 
@@ -153,25 +156,27 @@ def check_part1(answers: Answers, ref=None) -> PartResult:
 
     def count(label, value, expected, hint):
         if value is NOT_ANSWERED:
-            items.append(Item(label, None, "not answered"))
+            items.append(Item(label, None, _("not answered")))
         elif isinstance(value, Unreadable):
             items.append(Item(label, False, value.why))
         elif value == expected:
             items.append(Item(f"{label} = {value}", True))
         else:
-            items.append(Item(label, False, f"you wrote {value}; {hint}" if hint else f"you wrote {value}"))
+            wrote = _("you wrote {value}").format(value=value)
+            items.append(Item(label, False, f"{wrote}; {hint}" if hint else wrote))
 
     count("n_links", answers.n_links, n + 1,
-          "count every link (eslabón), the fixed base too: it is link 0 (seed 000, paso 0)")
+          _("count every link (eslabón), the fixed base too: it is link 0 (seed 000, paso 0)"))
     count("n_joints", answers.n_joints, n,
-          "count the joints (articulaciones) between the base and the gripper: each has its own axis in the picture")
+          _("count the joints (articulaciones) between the base and the gripper: each has its own axis in the picture"))
     kinds = list(ref.kinds)
     types = answers.joint_types
     if isinstance(types, list) and types != kinds:
-        wrong = [f"joint {j + 1}" for j, k in enumerate(kinds) if j >= len(types) or types[j] != k]
-        extra = f"; you gave {len(types)} letters for {n} joints" if len(types) != n else ""
-        items.append(Item("joint_types", False, f"look again at how the figure draws {', '.join(wrong[:3])} "
-                                                f"(a curled arrow: it turns; a straight one: it slides){extra}"))
+        wrong = [_("joint {j}").format(j=j + 1) for j, k in enumerate(kinds) if j >= len(types) or types[j] != k]
+        extra = _("; you gave {count} letters for {n} joints").format(count=len(types), n=n) if len(types) != n else ""
+        look = _("look again at how the figure draws {joints} (a curled arrow: it turns; a straight one: it "
+                 "slides)").format(joints=", ".join(wrong[:3]))
+        items.append(Item("joint_types", False, look + extra))
     else:
         count("joint_types", "".join(types) if isinstance(types, list) else types, "".join(kinds), "")
     cases = answers.x_cases
@@ -185,19 +190,20 @@ def check_part1(answers: Answers, ref=None) -> PartResult:
             elif expected in ("intersect", "skew"):
                 accepted |= {"intersect", "skew"}   # through the other axis or past it
         if cases is NOT_ANSWERED or (isinstance(cases, list) and (i > len(cases) or cases[i - 1] is None)):
-            items.append(Item(label, None, "not answered"))
+            items.append(Item(label, None, _("not answered")))
         elif isinstance(cases, Unreadable):
             items.append(Item(label, False, cases.why))
         elif cases[i - 1] in accepted:
-            items.append(Item(f"{label}: {cases[i - 1]}", True))
+            items.append(Item(f"{label}: {case_word(cases[i - 1])}", True))
         else:
-            items.append(Item(label, False, f"you wrote {cases[i - 1]!r}: look again at the axes of joints {i} and "
-                                            f"{i + 1} (z{i - 1} and z{i}) in the table: are their directions "
-                                            f"parallel and, if not, do the two lines meet?"))
+            items.append(Item(label, False, _("you wrote {case!r}: look again at the axes of joints {i} and {next} "
+                                              "(z{previous} and z{i}) in the table: are their directions parallel and, "
+                                              "if not, do the two lines meet?").format(
+                case=cases[i - 1], i=i, next=i + 1, previous=i - 1)))
     part = PartResult("part1", items)
     if isinstance(cases, list) and len(cases) != n - 1:
-        part.notes.append(f"(x_cases has {len(cases)} entries: give one for each i = 1…{n - 1}; "
-                          f"the last frame's x{n} is the special case of paso 0)")
+        part.notes.append(_("(x_cases has {count} entries: give one for each i = 1…{last}; the last frame's x{n} "
+                            "is the special case of paso 0)").format(count=len(cases), last=n - 1, n=n))
     return part
 
 
@@ -217,18 +223,19 @@ def _chain_item(answers: Answers, rows, n: int) -> Item:
     chain = answers.chain
     example = " @ ".join(f"T{i}" for i in range(1, n + 1))
     if chain is NOT_ANSWERED:
-        return Item("chain", None, f"not answered (write chain = {example})")
+        return Item("chain", None, _("not answered (write chain = {example})").format(example=example))
     if isinstance(chain, Unreadable):
         return Item("chain", False, chain.why)
     if len(chain) != n:
-        return Item("chain", False, f"it has {len(chain)} transformations; the robot's chain has {n}: {example}")
+        return Item("chain", False, _("it has {count} transformations; the robot's chain has {n}: {example}").format(
+            count=len(chain), n=n, example=example))
     given = {k: row for k, row in enumerate(answers.T[:n], start=1) if isinstance(row, Row)}
     for k, factor in enumerate(chain, start=1):
         if k in given and factor != given[k]:
             other = [j for j, row in given.items() if row == factor]
-            what = f"your T{other[0]}" if other else factor.text()
-            return Item("chain", False, f"its factor {k} is {what}, not your T{k}; the chain multiplies "
-                                        f"in order: chain = {example}")
+            what = _("your T{j}").format(j=other[0]) if other else factor.text()
+            return Item("chain", False, _("its factor {k} is {what}, not your T{k}; the chain multiplies in order: "
+                                          "chain = {example}").format(k=k, what=what, example=example))
     return Item(f"chain = {example}", True)
 
 
@@ -242,10 +249,11 @@ def check_part3(answers: Answers, _analysis: Analysis | None = None, ref=None) -
         match = chain_matches(analysis.rows, ref=ref)
         m = match["configurations"]
         if all(match["axes"]) and match["end_effector"] and match["last_z"]:
-            part.notes.append(f"Your T1…T{ref.n} move like the {ref.name}: all {ref.n} joint axes (as directed "
-                              f"lines) and the end effector match at the home pose and {m - 1} random configurations.")
+            part.notes.append(_("Your T1…T{n} move like the {robot}: all {n} joint axes (as directed lines) and the "
+                                "end effector match at the home pose and {m} random configurations.").format(
+                n=ref.n, robot=ref.name, m=m - 1))
         else:                                       # cannot happen: the two checks disagree
-            part.notes.append("(internal check failed: please report this answer to the course authors)")
+            part.notes.append(_("(internal check failed: please report this answer to the course authors)"))
     return part
 
 

@@ -1,7 +1,7 @@
 """Grade a folder of submitted PUMA notebooks: ``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv``.
 
     dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv [-j N] [--timeout S] [--resume]
-                [--secret-file KEY --release RELEASE_DIR [--fallback roster|none]]
+                [--secret-file KEY --release RELEASE_DIR [--fallback roster|none]] [--language en|es]
     dhlab-grade export gradescope|try-gradescope|canvas|moodle ...   (dhlab.grading.export)
     dhlab-grade --clean                    (remove what a killed grader left: dhlab.grading.cleanup)
     python -m dhlab.grading.cli puma SUBMISSIONS_DIR ...          (the same)
@@ -46,6 +46,14 @@ missing, tampered or classmate's record (``--fallback roster``, the default with
 ``--release``; ``none``: no marks). The rules, and the gradebook's five variant columns:
 :mod:`dhlab.grading.grade_variants`. Without ``--secret-file`` every submission is
 graded against the PUMA 560, as before.
+
+**Languages.** A class may mix English and Spanish notebooks (``dhlab-assign release --language``,
+or the roster's ``language``/``idioma`` column): each feedback file is written in its student's
+language (the notebook's ``metadata["dhlab"]["language"]``, else its ``dhlab.set_language`` call,
+else the grader's), while ``--language`` (else ``DHLAB_LANGUAGE``, else English) is the teacher's:
+this command's help and messages, the summary and the gradebook's ``status`` column. The
+gradebook's column names, and the status keys ``ok`` and ``grader error: … grade again with
+--resume``, stay English (LMS imports and ``--resume`` read them).
 """
 from __future__ import annotations
 
@@ -57,6 +65,7 @@ import threading
 import time
 from pathlib import Path
 
+from .language import _
 from .launch import run_submission
 from .progress import Progress, _summary
 from .rows import _error_row, grade_submission
@@ -151,37 +160,58 @@ def main(argv=None) -> int:
 
 
 def grade(argv) -> int:
-    """``dhlab-grade puma SUBMISSIONS -o gradebook.csv …`` (see the module)."""
+    """``dhlab-grade puma SUBMISSIONS -o gradebook.csv …`` (see the module), in the teacher's language
+    (``--language``, else ``DHLAB_LANGUAGE``, else English): its help, messages, statuses and summary;
+    each feedback file is in its student's language (:mod:`dhlab.grading.rows`)."""
+    from ..i18n import set_language
+    from ..validation import DHLabError
+    from .language import language_option
+    try:
+        teacher = language_option(argv)
+    except DHLabError as exc:
+        print(f"dhlab-grade: error: {exc}", file=sys.stderr)
+        return 2
+    previous = set_language(teacher)
+    try:
+        return _grade(argv)
+    finally:
+        set_language(previous)
+
+
+def _grade(argv) -> int:
     parser = argparse.ArgumentParser(prog="dhlab-grade", description=__doc__.splitlines()[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("assignment", choices=ASSIGNMENTS, help="the assignment to grade (puma)")
-    parser.add_argument("submissions", type=Path, help="folder of submitted notebooks (*.ipynb, any depth)")
-    parser.add_argument("-o", "--output", type=Path, default=Path("gradebook.csv"), help="the gradebook CSV")
-    parser.add_argument("-j", "--jobs", type=int, default=1, help="submissions graded at the same time")
-    parser.add_argument("--timeout", type=float, default=30, help="seconds per cell (default 30)")
+    parser.add_argument("assignment", choices=ASSIGNMENTS, help=_("the assignment to grade (puma)"))
+    parser.add_argument("submissions", type=Path, help=_("folder of submitted notebooks (*.ipynb, any depth)"))
+    parser.add_argument("-o", "--output", type=Path, default=Path("gradebook.csv"), help=_("the gradebook CSV"))
+    parser.add_argument("-j", "--jobs", type=int, default=1, help=_("submissions graded at the same time"))
+    parser.add_argument("--timeout", type=float, default=30, help=_("seconds per cell (default 30)"))
     parser.add_argument("--total-timeout", type=float, default=None,
-                        help="seconds for a whole notebook (default 4 × --timeout)")
-    parser.add_argument("--memory-mb", type=float, default=2048, help="memory (address space) per kernel, MB")
-    parser.add_argument("--output-mb", type=float, default=10, help="output per cell before it is stopped, MB")
+                        help=_("seconds for a whole notebook (default 4 × --timeout)"))
+    parser.add_argument("--memory-mb", type=float, default=2048, help=_("memory (address space) per kernel, MB"))
+    parser.add_argument("--output-mb", type=float, default=10, help=_("output per cell before it is stopped, MB"))
     parser.add_argument("--feedback-dir", type=Path, default=None,
-                        help="folder for the feedback files (default: beside the CSV, <name>_feedback)")
+                        help=_("folder for the feedback files (default: beside the CSV, <name>_feedback)"))
     parser.add_argument("--resume", action="store_true",
-                        help="keep the rows of an existing gradebook and grade only the missing or changed files")
+                        help=_("keep the rows of an existing gradebook and grade only the missing or changed files"))
     parser.add_argument("--isolation", choices=("auto", "user", "none"), default="auto",
-                        help="auto (default): a user per job when run as root, else none; user: refuse to "
-                             "grade without it; none: kernels run as the grader's user")
-    parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+                        help=_("auto (default): a user per job when run as root, else none; user: refuse to "
+                               "grade without it; none: kernels run as the grader's user"))
+    parser.add_argument("-q", "--quiet", action="store_true", help=_("no progress bar"))
     parser.add_argument("--secret-file", type=Path, default=None,
-                        help="personal variants: the teacher's secret the notebooks were released with; each "
-                             "submission is graded against its student's own robot (without it: the PUMA 560)")
+                        help=_("personal variants: the teacher's secret the notebooks were released with; each "
+                               "submission is graded against its student's own robot (without it: the PUMA 560)"))
     parser.add_argument("--release", type=Path, default=None,
-                        help="the folder 'dhlab-assign release' wrote (its _teacher/ holds the roster's variants)")
+                        help=_("the folder 'dhlab-assign release' wrote (its _teacher/ holds the roster's variants)"))
     parser.add_argument("--fallback", choices=("roster", "none"), default=None,
-                        help="a missing, tampered or classmate's variant: grade against the roster's variant for "
-                             "the student (roster, the default with --release) or give no marks (none)")
+                        help=_("a missing, tampered or classmate's variant: grade against the roster's variant for "
+                               "the student (roster, the default with --release) or give no marks (none)"))
+    parser.add_argument("--language", default=None,
+                        help=_("the teacher's language, en or es: this command's messages, the gradebook's statuses "
+                               "(default: DHLAB_LANGUAGE, else en); each feedback file is in its student's language"))
     options = parser.parse_args(argv)
     if options.jobs < 1 or options.timeout <= 0 or options.memory_mb < 256:
-        parser.error("-j must be ≥ 1, --timeout > 0 and --memory-mb ≥ 256")
+        parser.error(_("-j must be ≥ 1, --timeout > 0 and --memory-mb ≥ 256"))
     options.total_timeout = options.total_timeout or 4 * options.timeout
     if options.secret_file is None and (options.release is not None or options.fallback is not None):
         parser.error("--release and --fallback grade personal variants: give --secret-file too (the secret "
@@ -200,10 +230,10 @@ def grade(argv) -> int:
     options.columns = VARIANT_COLUMNS if resolve is not None else COLUMNS
     folder = options.submissions
     if not folder.is_dir():
-        parser.error(f"{folder} is not a folder")
+        parser.error(_("{folder} is not a folder").format(folder=folder))
     paths = find_submissions(folder)
     if not paths:
-        print(f"no notebooks (*.ipynb) found under {folder}", file=sys.stderr)
+        print(_("no notebooks (*.ipynb) found under {folder}").format(folder=folder), file=sys.stderr)
         return 2
     feedback_dir = options.feedback_dir or options.output.with_name(options.output.stem + "_feedback")
 
@@ -263,11 +293,14 @@ def grade(argv) -> int:
     if graded:
         print(_summary(graded, elapsed, iso.jobs), file=sys.stderr)
     if keep:
-        print(f"Resumed: {len(keep)} row{'s' if len(keep) != 1 else ''} kept from {options.output}.", file=sys.stderr)
-    print(f"Gradebook: {options.output}  Feedback: {feedback_dir}/", file=sys.stderr)
+        print(_("Resumed: {count} rows kept from {gradebook}.").format(count=len(keep), gradebook=options.output),
+              file=sys.stderr)
+    print(_("Gradebook: {gradebook}  Feedback: {folder}/").format(gradebook=options.output, folder=feedback_dir),
+          file=sys.stderr)
     if batch.refusal:
         left = sorted(set(batch.discarded) | {s.submission for s in todo if s.submission not in batch.rows})
-        print(f"STOPPED: {batch.refusal}\nNot graded ({len(left)}): {', '.join(left[:20])}", file=sys.stderr)
+        print(_("STOPPED: {why}").format(why=batch.refusal), file=sys.stderr)
+        print(_("Not graded ({count}): {names}").format(count=len(left), names=", ".join(left[:20])), file=sys.stderr)
         return 3
     return 0
 

@@ -17,6 +17,7 @@ import tempfile
 from pathlib import Path
 
 from ..validation import DHLabError
+from .language import _, split_language
 
 __all__ = ["main"]
 
@@ -25,33 +26,35 @@ def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="dhlab-grade export", description=__doc__.splitlines()[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="target", required=True)
-    gs = sub.add_parser("gradescope", help="Gradescope's autograder.zip (otter-grader runs it too)")
+    gs = sub.add_parser("gradescope", help=_("Gradescope's autograder.zip (otter-grader runs it too)"))
     gs.add_argument("-o", "--output", type=Path, default=Path("autograder.zip"))
-    gs.add_argument("--secret-file", type=Path, default=None, help="personal variants: the teacher's secret")
-    gs.add_argument("--release", type=Path, default=None, help="personal variants: the folder dhlab-assign wrote")
+    gs.add_argument("--secret-file", type=Path, default=None, help=_("personal variants: the teacher's secret"))
+    gs.add_argument("--release", type=Path, default=None, help=_("personal variants: the folder dhlab-assign wrote"))
     gs.add_argument("--fallback", choices=("roster", "none"), default=None)
-    gs.add_argument("--timeout", type=float, default=30, help="seconds per cell (default 30)")
-    gs.add_argument("--total-timeout", type=float, default=None, help="seconds per notebook (default 4 × --timeout)")
+    gs.add_argument("--timeout", type=float, default=30, help=_("seconds per cell (default 30)"))
+    gs.add_argument("--total-timeout", type=float, default=None,
+                    help=_("seconds per notebook (default 4 × --timeout)"))
     gs.add_argument("--memory-mb", type=float, default=2048)
     gs.add_argument("--isolation", choices=("auto", "user", "none"), default="auto")
-    tr = sub.add_parser("try-gradescope", help="run an autograder.zip here, as Gradescope would")
+    tr = sub.add_parser("try-gradescope", help=_("run an autograder.zip here, as Gradescope would"))
     tr.add_argument("zip", type=Path)
     tr.add_argument("notebook", type=Path)
-    tr.add_argument("--email", default="student@example.edu", help="the submitter's email in the metadata")
-    tr.add_argument("--sid", default="", help="the submitter's SID in the metadata")
+    tr.add_argument("--email", default="student@example.edu", help=_("the submitter's email in the metadata"))
+    tr.add_argument("--sid", default="", help=_("the submitter's SID in the metadata"))
     for name in ("canvas", "moodle"):
-        lms = sub.add_parser(name, help=f"a CSV file {name.capitalize()} imports")
-        lms.add_argument("gradebook", type=Path, help="the gradebook dhlab-grade wrote")
-        lms.add_argument("--roster", type=Path, required=True, help="the class list (CSV with a header)")
+        lms = sub.add_parser(name, help=_("a CSV file {lms} imports").format(lms=name.capitalize()))
+        lms.add_argument("gradebook", type=Path, help=_("the gradebook dhlab-grade wrote"))
+        lms.add_argument("--roster", type=Path, required=True, help=_("the class list (CSV with a header)"))
         lms.add_argument("-o", "--output", type=Path, required=True)
-        lms.add_argument("--id-column", default=None, help="the roster's id column (default: id, student_id, …)")
+        lms.add_argument("--id-column", default=None, help=_("the roster's id column (default: id, student_id, …)"))
         lms.add_argument("--release", type=Path, default=None,
-                         help="the release folder: its file names count as their students' ids")
+                         help=_("the release folder: its file names count as their students' ids"))
         if name == "canvas":
-            lms.add_argument("--assignment", default="PUMA assignment", help="the assignment's column title in Canvas")
+            lms.add_argument("--assignment", default="PUMA assignment",
+                             help=_("the assignment's column title in Canvas"))
         else:
             lms.add_argument("--feedback-dir", type=Path, default=None,
-                             help="the feedback files (default: beside the gradebook, <name>_feedback)")
+                             help=_("the feedback files (default: beside the gradebook, <name>_feedback)"))
     return parser
 
 
@@ -63,7 +66,8 @@ def _lms(args) -> int:
         columns = csv.DictReader(f).fieldnames or []
     rows = read_csv(args.gradebook, columns)
     if "score" not in columns or not rows:
-        raise DHLabError(f"{args.gradebook} is not a gradebook dhlab-grade wrote (no rows with a score column).")
+        raise DHLabError(_("{file} is not a gradebook dhlab-grade wrote (no rows with a score column).").format(
+            file=args.gradebook))
     id_column, roster = lms.read_roster_rows(args.roster, args.id_column)
     files = {}
     if args.release is not None:
@@ -76,13 +80,14 @@ def _lms(args) -> int:
         feedback = args.feedback_dir or args.gradebook.with_name(args.gradebook.stem + "_feedback")
         table = lms.moodle_rows(by_id, id_column, feedback)
     lms.write(args.output, table)
-    print(f"dhlab-grade export {args.target}: {len(by_id)} grades in {args.output}.", file=sys.stderr)
+    print(_("dhlab-grade export {target}: {count} grades in {file}.").format(
+        target=args.target, count=len(by_id), file=args.output), file=sys.stderr)
     if unmatched:
-        print(f"Not exported, no student of the roster ({len(unmatched)}): {', '.join(unmatched[:10])}",
-              file=sys.stderr)
+        print(_("Not exported, no student of the roster ({count}): {names}").format(
+            count=len(unmatched), names=", ".join(unmatched[:10])), file=sys.stderr)
     if missing:
-        print(f"No graded submission ({len(missing)}, left as they are in the LMS): {', '.join(missing[:10])}",
-              file=sys.stderr)
+        print(_("No graded submission ({count}, left as they are in the LMS): {names}").format(
+            count=len(missing), names=", ".join(missing[:10])), file=sys.stderr)
     return 0
 
 
@@ -93,24 +98,40 @@ def _try(args) -> int:
         outcome = harness.run([args.notebook], metadata(args.email, sid=args.sid))
     print(outcome.log, file=sys.stderr)
     if outcome.results is None:
-        print("No results.json: Gradescope shows an autograder failure (the log above says why).", file=sys.stderr)
+        print(_("No results.json: Gradescope shows an autograder failure (the log above says why)."), file=sys.stderr)
         return 1
     print(json.dumps(outcome.results, indent=1, ensure_ascii=False))
     wrong = problems(outcome.results)
     for p in wrong:
-        print(f"results.json does not follow Gradescope's schema: {p}", file=sys.stderr)
+        print(_("results.json does not follow Gradescope's schema: {problem}").format(problem=p), file=sys.stderr)
     return 1 if wrong else 0
 
 
 def main(argv=None) -> int:
+    """``dhlab-grade export …`` in the teacher's language (``--language``, else ``DHLAB_LANGUAGE``)."""
+    from ..i18n import set_language
+    argv = sys.argv[1:] if argv is None else list(argv)
+    try:
+        language, argv = split_language(argv)
+    except DHLabError as exc:
+        print(f"dhlab-grade export: error: {exc}", file=sys.stderr)
+        return 2
+    previous = set_language(language)
+    try:
+        return _main(argv)
+    finally:
+        set_language(previous)
+
+
+def _main(argv) -> int:
     args = _parser().parse_args(argv)
     try:
         if args.target == "gradescope":
             from .gradescope import export
             out = export(args.output, args.secret_file, args.release, args.fallback, args.timeout,
                          args.total_timeout, args.memory_mb, isolation=args.isolation)
-            print(f"dhlab-grade export: {out} (upload it to Gradescope as the autograder; never to students)",
-                  file=sys.stderr)
+            print(_("dhlab-grade export: {file} (upload it to Gradescope as the autograder; never to students)").format(
+                file=out), file=sys.stderr)
             return 0
         if args.target == "try-gradescope":
             return _try(args)

@@ -40,6 +40,7 @@ from pathlib import Path, PurePosixPath
 
 from ..validation import DHLabError
 from . import variants as V
+from .language import N_, _
 
 __all__ = ["COLUMNS", "VariantSetup", "VariantInfo", "setup", "identify", "resolve", "columns", "status_note",
            "feedback_lines", "FALLBACKS"]
@@ -147,8 +148,10 @@ def identify(vs: VariantSetup, rel_path) -> tuple:
     stem = PurePosixPath(parts[-1]).stem
     folder = _nbgrader_student(parts)
     if not vs.records:
-        return (folder, f"the folder submitted/{folder}/") if folder else (stem, "the file name")
-    for candidate, how in ((stem, "the file name"), (folder, f"the folder submitted/{folder}/")):
+        return ((folder, _("the folder submitted/{folder}/").format(folder=folder)) if folder
+                else (stem, _("the file name")))
+    by_folder = _("the folder submitted/{folder}/").format(folder=folder)
+    for candidate, how in ((stem, _("the file name")), (folder, by_folder)):
         if candidate is None:
             continue
         # a Mac writes 'é' as 'e' + a combining accent (NFD) in file names: compare composed (NFC)
@@ -157,8 +160,10 @@ def identify(vs: VariantSetup, rel_path) -> tuple:
                 return name, how
             if name in vs.files:
                 return vs.files[name], how
-    tried = f"the file name {stem!r}" + (f" and the folder {folder!r}" if folder else "")
-    return None, f"{tried} match{'es' if not folder else ''} no student of the roster"
+    if folder:
+        return None, _("the file name {stem!r} and the folder {folder!r} match no student of the roster").format(
+            stem=stem, folder=folder)
+    return None, _("the file name {stem!r} matches no student of the roster").format(stem=stem)
 
 
 def resolve(vs: VariantSetup, nb, rel_path) -> tuple:
@@ -169,21 +174,23 @@ def resolve(vs: VariantSetup, nb, rel_path) -> tuple:
     record = nb.get("metadata", {}).get(V.METADATA_KEY) if isinstance(nb, dict) else None
     claimed = record.get("student_id") if isinstance(record, dict) else None
     if student is None:
-        names = f" (its record names {claimed!r})" if isinstance(claimed, str) else ""
-        return None, VariantInfo(None, "unknown_student", "none",
-                                 f"cannot tell whose submission this is: {how}{names}; name the file "
-                                 "<student id>.ipynb as in the release (or nbgrader's submitted/<id>/…)")
+        names = " " + _("(its record names {claimed!r})").format(claimed=claimed) if isinstance(claimed, str) else ""
+        return None, VariantInfo(None, "unknown_student", "none", _(
+            "cannot tell whose submission this is: {how}{names}; name the file <student id>.ipynb as in the release "
+            "(or nbgrader's submitted/<id>/…)").format(how=how, names=names))
     check = V.verify(record, student, vs.secret, vs.roster_ids)
     signed_for = check.signed_for or ""
     if check.ok:
-        info = VariantInfo(student, "ok", "notebook", f"signed for {student!r} ({how})", check.variant, signed_for)
+        signed = _("signed for {student!r} ({how})").format(student=student, how=how)
+        info = VariantInfo(student, "ok", "notebook", signed, check.variant, signed_for)
     elif vs.fallback == "roster" and student in vs.records:
         variant = V.Variant.from_dict(vs.records[student]["variant"])
-        info = VariantInfo(student, check.status, "roster", f"{check.message}; graded against the roster's "
-                           f"variant for {student!r}", variant, signed_for)
+        info = VariantInfo(student, check.status, "roster", _("{why}; graded against the roster's variant for "
+                                                              "{student!r}").format(why=check.message, student=student),
+                           variant, signed_for)
     else:
-        return None, VariantInfo(student, check.status, "none", f"{check.message}; not graded "
-                                 f"(--fallback none)", None, signed_for)
+        return None, VariantInfo(student, check.status, "none", _("{why}; not graded (--fallback none)").format(
+            why=check.message), None, signed_for)
     if not isinstance(nb, dict) or not isinstance(nb.get("cells"), list):
         return nb, info                                    # not a notebook: the runner says so
     return prepare_submission(nb, info.variant, student), info
@@ -201,13 +208,18 @@ def columns(info: VariantInfo | None) -> dict:
             "variant_id": V.fingerprint(v)[:ID_DIGITS] if v is not None else "", "signed_for": info.signed_for}
 
 
+# the status column's note on a variant that did not verify ('variant missing: …'; dhlab.grading.progress counts them)
+VARIANT_NOTES = {"unknown_student": N_("student not identified: {message}"),
+                 "missing": N_("variant missing: {message}"), "tampered": N_("variant tampered: {message}"),
+                 "other_student": N_("variant other_student: {message}")}
+
+
 def status_note(info: VariantInfo | None) -> str:
     """The variant's part of the status column ('' when the notebook's own variant verified)."""
     if info is None or info.status == "ok":
         return ""
-    if info.status == "unknown_student":
-        return f"student not identified: {info.message}"
-    return f"variant {info.status}: {info.message}"
+    note = _(VARIANT_NOTES.get(info.status, N_("variant {status}: {message}")))
+    return note.format(status=info.status, message=info.message)
 
 
 def feedback_lines(info: VariantInfo | None) -> list:
@@ -215,13 +227,14 @@ def feedback_lines(info: VariantInfo | None) -> list:
     if info is None:
         return []
     if info.variant is None:
-        return [f"Robot: none — {status_note(info)}", ""]
+        return [_("Robot: none — {note}").format(note=status_note(info)), ""]
     robot = info.robot
-    where = {"notebook": "the variant signed for you in your notebook",
-             "roster": "the variant your teacher released to you"}[info.source]
-    lines = [f"Robot graded against: your {robot.name} ({V.fingerprint(info.variant)[:ID_DIGITS]}), {where}."]
+    where = {"notebook": _("the variant signed for you in your notebook"),
+             "roster": _("the variant your teacher released to you")}[info.source]
+    lines = [_("Robot graded against: your {robot} ({id}), {where}.").format(
+        robot=robot.name, id=V.fingerprint(info.variant)[:ID_DIGITS], where=where)]
     if info.status != "ok":
-        lines.append(f"Variant check: {info.status} — {info.message}.")
+        lines.append(_("Variant check: {status} — {message}.").format(status=info.status, message=info.message))
     return lines + [""]
 
 

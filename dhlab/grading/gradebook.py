@@ -29,6 +29,8 @@ import tempfile
 import unicodedata
 from pathlib import Path
 
+from .language import N_, _
+
 __all__ = ["COLUMNS", "VARIANT_COLUMNS", "PART_COLUMNS", "GRADE_AGAIN", "write_atomic", "write_csv", "read_csv",
            "feedback_filename", "Cells", "error_text", "cell_error", "status_text", "feedback_text",
            "not_graded_feedback", "grade_again", "assignment_cells"]
@@ -40,8 +42,8 @@ COLUMNS = ["submission", "score", "max_score", "status", *PART_COLUMNS.values(),
 # reader of the first columns reads it as before (see dhlab.grading.grade_variants)
 VARIANT_COLUMNS = COLUMNS + ["variant_status", "variant_source", "variant_family", "variant_id", "signed_for"]
 # the end of the status of a row the grader must grade again (its own failure, or the machine's)
-GRADE_AGAIN = "grade again with --resume"
-NOT_THE_STUDENTS = f"not the student's fault: {GRADE_AGAIN}"
+GRADE_AGAIN = "grade again with --resume"      # (a key --resume finds: never translated)
+NOT_THE_STUDENTS = N_("not the student's fault: {again}")
 
 
 def write_atomic(path, text: str) -> None:
@@ -126,7 +128,7 @@ class Cells:
     """
 
     def __init__(self, code_cells=()):
-        self.order = {number: k for k, (number, _) in enumerate(code_cells, start=1)}
+        self.order = {number: k for k, (number, _source) in enumerate(code_cells, start=1)}
         self.source = dict(code_cells)
 
     def number(self, cell: int) -> int:
@@ -142,7 +144,7 @@ class Cells:
 
     def of_assignment(self, cell: int) -> bool:
         """Whether the cell is one of the assignment's locked cells (the student cannot edit them)."""
-        code, seam_line, _ = assignment_cells()
+        code, seam_line, _stubs = assignment_cells()
         source = self.source.get(cell)
         return source is not None and (source.strip() in code or source.lstrip().startswith(seam_line))
 
@@ -190,22 +192,23 @@ def error_text(ename: str, evalue: str) -> str:
     'SyntaxError on line 14: …' (not '… (98695007.py, line 14)')."""
     found = _FILE_LINE.search(evalue or "")
     if found and ename in ("SyntaxError", "IndentationError", "TabError"):
-        return f"{ename} on line {found[1]}: {evalue[:found.start()]}"
+        return _("{error} on line {line}: {message}").format(error=ename, line=found[1], message=evalue[:found.start()])
     return f"{ename}: {evalue}" if evalue else ename
 
 
 def cell_error(number: int, ename: str, evalue: str, cells=None) -> str:
     """Why an answer cell was not read: 'your answer cell (cell 7) has a SyntaxError on line 14'."""
-    where = f"your answer cell ({_cells([number], cells)})"
+    where = _("your answer cell ({cells})").format(cells=_cells([number], cells))
     found = _FILE_LINE.search(evalue or "")
     if found and ename in ("SyntaxError", "IndentationError", "TabError"):
-        return f"{where} has {'an' if ename[0] == 'I' else 'a'} {ename} on line {found[1]}"
-    return f"{where} raised {error_text(ename, evalue)}"
+        return _("{where} has a {error} on line {line}").format(where=where, error=ename, line=found[1])
+    return _("{where} raised {error}").format(where=where, error=error_text(ename, evalue))
 
 
 def _cells(numbers, cells=None) -> str:
     numbers = [cells.number(n) if cells is not None else n for n in numbers]
-    return ("cell " if len(numbers) == 1 else "cells ") + ", ".join(str(n) for n in numbers)
+    listed = ", ".join(str(n) for n in numbers)
+    return _("cell {n}").format(n=listed) if len(numbers) == 1 else _("cells {numbers}").format(numbers=listed)
 
 
 def _renumber(text: str, cells) -> str:
@@ -216,51 +219,58 @@ def _renumber(text: str, cells) -> str:
 def _stopped(what: str, numbers, cells) -> str:
     """'kernel died in cell 7 (run again without it)' (``what`` with '{cells}' in it), unless the
     cell is the assignment's own: the student did nothing wrong there, and cannot delete it."""
-    text = what.format(cells=_cells(numbers, cells))
+    text = _(what).format(cells=_cells(numbers, cells))
     ours = [n for n in numbers if cells is not None and cells.of_assignment(n)]
     if ours:
-        return f"{text} (a cell of the assignment: {cells.quote(ours[0])}; probably {NOT_THE_STUDENTS})"
-    return f"{text} (run again without it)"
+        return text + " " + _("(a cell of the assignment: {quote}; probably {fault})").format(
+            quote=cells.quote(ours[0]), fault=_not_the_students())
+    return text + " " + _("(run again without it)")
+
+
+def _not_the_students() -> str:
+    return _(NOT_THE_STUDENTS).format(again=GRADE_AGAIN)
 
 
 def status_text(run: dict, report_answered: bool, answers_problem: str = "", cells=None) -> str:
     """One line for the gradebook's status column: 'ok', or every reason, joined by '; '.
     ``cells`` (:class:`Cells`): name the cells as a student counts them."""
     if run.get("grader_error"):                   # nothing else it says can be trusted
-        status = f"grader error: {run['grader_error']} ({NOT_THE_STUDENTS})"
+        status = "grader error: " + _("{error} ({fault})").format(error=run["grader_error"], fault=_not_the_students())
         return status + (f" ({run['isolation_note']})" if run.get("isolation_note") else "")
     reasons = []
     if run.get("notebook_error"):
-        reasons.append(f"invalid notebook: {run['notebook_error']}")
+        reasons.append(_("invalid notebook: {error}").format(error=run["notebook_error"]))
     memory = [e for e in run.get("errors", []) if e[1] == "MemoryError"]
     others = [e for e in run.get("errors", []) if e[1] != "MemoryError"]
     if memory:
-        reasons.append(f"memory limit reached in {_cells((e[0] for e in memory), cells)} (MemoryError)")
+        reasons.append(_("memory limit reached in {cells} (MemoryError)").format(
+            cells=_cells((e[0] for e in memory), cells)))
     if others:
         detail = f" ({error_text(others[0][1], others[0][2])})"
-        reasons.append(f"error in {_cells((e[0] for e in others), cells)}" + (detail if len(others) == 1 else
-                                                                              f", first{detail}"))
+        reasons.append(_("error in {cells}").format(cells=_cells((e[0] for e in others), cells)) + (
+            detail if len(others) == 1 else _(", first") + detail))
     if run.get("timeouts"):
-        reasons.append(f"timeout: {_cells(run['timeouts'], cells)} stopped at the time limit")
+        reasons.append(_("timeout: {cells} stopped at the time limit").format(cells=_cells(run["timeouts"], cells)))
     if run.get("output_capped"):
-        sizes = ", ".join(f"{b / 1e6:.1f} MB in {_cells([c], cells)}" for c, b in run["output_capped"])
-        reasons.append(f"output limit: printed {sizes} (stopped, run again without it)")
+        sizes = ", ".join(_("{size} MB in {cells}").format(size=f"{b / 1e6:.1f}", cells=_cells([c], cells))
+                          for c, b in run["output_capped"])
+        reasons.append(_("output limit: printed {sizes} (stopped, run again without it)").format(sizes=sizes))
     if run.get("kernel_died"):
-        reasons.append(_stopped("kernel died in {cells}", run["kernel_died"], cells))
+        reasons.append(_stopped(N_("kernel died in {cells}"), run["kernel_died"], cells))
     if run.get("stuck"):
-        reasons.append(_stopped("{cells} could not be interrupted", run["stuck"], cells))
+        reasons.append(_stopped(N_("{cells} could not be interrupted"), run["stuck"], cells))
     if run.get("runner_killed"):
-        reasons.append(_stopped("the grader's runner was killed in {cells}", run["runner_killed"], cells))
+        reasons.append(_stopped(N_("the grader's runner was killed in {cells}"), run["runner_killed"], cells))
     if run.get("out_of_time"):
-        reasons.append("time limit for the whole notebook reached")
+        reasons.append(_("time limit for the whole notebook reached"))
     if run.get("answers_error"):
-        reasons.append(f"answers not read: {run['answers_error']}")
+        reasons.append(_("answers not read: {error}").format(error=run["answers_error"]))
     if answers_problem:
         reasons.append(answers_problem)
     if run.get("tampering"):
-        reasons.append(f"modifies dhlab, ignored ({_renumber(run['tampering'][0], cells)})")
+        reasons.append(_("modifies dhlab, ignored ({what})").format(what=_renumber(run["tampering"][0], cells)))
     if not report_answered and not run.get("notebook_error"):
-        reasons.append("not answered")
+        reasons.append(_("not answered"))
     status = "; ".join(reasons) or "ok"
     if run.get("isolation_note"):
         status += f" ({run['isolation_note']})"
@@ -270,29 +280,35 @@ def status_text(run: dict, report_answered: bool, answers_problem: str = "", cel
 def feedback_text(submission: str, run: dict, report, status: str, robot_lines=(), cells=None) -> str:
     """The feedback file of one submission: the score, what happened, every check
     (``robot_lines``: which robot it was graded against, with variants)."""
-    lines = [f"Submission: {submission}", f"File: {run.get('file', submission + '.ipynb')}", f"Status: {status}", ""]
+    lines = [_("Submission: {submission}").format(submission=submission),
+             _("File: {file}").format(file=run.get("file", submission + ".ipynb")),
+             _("Status: {status}").format(status=status), ""]
     lines += list(robot_lines)
     lines.append(report.text())
     details = []
     for number, ename, evalue in run.get("errors", []):
         quote = f" ({cells.quote(number)})" if cells is not None and cells.quote(number) else ""
-        details.append(f"{_cells([number], cells)}{quote} raised {error_text(ename, evalue)}")
+        details.append(_("{cells}{quote} raised {error}").format(cells=_cells([number], cells), quote=quote,
+                                                                  error=error_text(ename, evalue)))
     if run.get("skipped"):
-        details.append(f"the notebook was run again without {_cells(run['skipped'], cells)}")
+        details.append(_("the notebook was run again without {cells}").format(cells=_cells(run["skipped"], cells)))
     if run.get("tampering"):
-        details += [f"{_renumber(t, cells)} (this has no effect: the grader checks your answers in its own process)"
-                    for t in run["tampering"]]
+        details += [_("{what} (this has no effect: the grader checks your answers in its own process)").format(
+            what=_renumber(t, cells)) for t in run["tampering"]]
     if details:
-        counted = " (cells counted from the top, code cells only)" if cells is not None else ""
-        lines += [f"How your notebook ran{counted}:", *[f"  - {d}" for d in details], ""]
-    lines.append("Your answers were read from the variables n_links, n_joints, joint_types, x_cases, "
-                 f"link_points, T1…T{report.n} and chain after your notebook ran, and checked by the grader "
-                 f"against {'your ' + report.robot if report.robot != 'PUMA 560' else 'the PUMA 560'}.")
+        head = (_("How your notebook ran (cells counted from the top, code cells only):") if cells is not None
+                else _("How your notebook ran:"))
+        lines += [head, *[f"  - {d}" for d in details], ""]
+    robot = (_("your {robot}").format(robot=report.robot) if report.robot != "PUMA 560" else _("the PUMA 560"))
+    lines.append(_("Your answers were read from the variables n_links, n_joints, joint_types, x_cases, link_points, "
+                   "T1…T{n} and chain after your notebook ran, and checked by the grader against {robot}.").format(
+        n=report.n, robot=robot))
     return "\n".join(lines) + "\n"
 
 
 def not_graded_feedback(submission: str, file: str, status: str, robot_lines=()) -> str:
     """The feedback file of a submission the grader failed on: no score, and why not."""
-    return "\n".join([f"Submission: {submission}", f"File: {file}", f"Status: {status}", "", *robot_lines,
-                      "Not graded: the grader failed on this notebook (a grader error: the grading machine's "
-                      "problem, not your work), so it has no score yet. Your teacher will grade it again.", ""])
+    return "\n".join([_("Submission: {submission}").format(submission=submission), _("File: {file}").format(file=file),
+                      _("Status: {status}").format(status=status), "", *robot_lines,
+                      _("Not graded: the grader failed on this notebook (a grader error: the grading machine's "
+                        "problem, not your work), so it has no score yet. Your teacher will grade it again."), ""])

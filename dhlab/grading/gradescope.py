@@ -58,7 +58,7 @@ ROOT_ENV = "DHLAB_AUTOGRADER_ROOT"
 CONFIG = "dhlab_autograder.json"
 SECRET = "secret.key"
 TEACHER = Path("release") / "_teacher"
-_SCORE_LINE = re.compile(r".* assignment: [0-9.]+/[0-9]+ points")
+_SCORE_LINE = re.compile(r"(.* assignment|Tarea .*): [0-9.]+/[0-9]+ (points|puntos)")   # English or Spanish
 _NOT_ISOLATED = re.compile(r" \(not isolated: [^\n]*\)$", re.M)
 VISIBILITIES = ("hidden", "after_due_date", "after_published", "visible")
 
@@ -237,16 +237,20 @@ def results(row: dict) -> dict:
     one test per part (its feedback as output), the rest of the feedback as the top-level output."""
     from .checks import POINTS, TITLES
     from .gradebook import PART_COLUMNS
+    from .language import _, current_language, speaking
     parts = row.get("_part_text", {})
     header = row["_feedback_text"]
     for text in parts.values():
         header = header.replace(text, "")
+    with speaking(row.get("_language") or current_language()):           # the student's language
+        heads = ("Submission:", "File:", _("Submission: {submission}").split("{")[0], _("File: {file}").split("{")[0])
+        names = {key: _("Part {number}: {title}").format(number=key[-1], title=_(TITLES[key])) for key in PART_COLUMNS}
     header = "\n".join(line for line in header.splitlines()       # the score is Gradescope's own line
-                       if not line.startswith(("Submission:", "File:")) and not _SCORE_LINE.fullmatch(line))
+                       if not line.startswith(heads) and not _SCORE_LINE.fullmatch(line))
     header = _NOT_ISOLATED.sub("", header)      # the container is the boundary there: the log says it
     while "\n\n\n" in header:
         header = header.replace("\n\n\n", "\n\n")
-    tests = [{"name": f"Part {key[-1]}: {TITLES[key]}", "number": key[-1], "score": float(row[column] or 0),
+    tests = [{"name": names[key], "number": key[-1], "score": float(row[column] or 0),
               "max_score": float(POINTS[key]), "output": parts.get(key, ""), "visibility": "visible"}
              for key, column in PART_COLUMNS.items()]
     return {"score": float(row["score"]), "output": header.strip() + "\n", "visibility": "visible",

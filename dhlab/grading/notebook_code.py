@@ -7,13 +7,20 @@ code does to dhlab (the grader checks in its own process; the teacher sees it in
 The staging of a class (:mod:`dhlab.grading.staging`) reads the notebooks the same way.
 
 Like the runner, this file is also imported as a plain script (no package), so it uses
-the standard library only.
+the standard library only (its messages are translated when it is imported from the package,
+by the grader, as the teacher's language: :mod:`dhlab.grading.language`).
 """
 from __future__ import annotations
 
 import ast
 import json
 from pathlib import Path
+
+try:
+    from .language import _
+except ImportError:          # loaded as a plain script by the runner: its messages stay English there
+    def _(message: str) -> str:
+        return message
 
 __all__ = ["NotebookError", "read_code_cells", "scan_for_tampering", "MAX_NOTEBOOK_BYTES", "MAX_CODE_BYTES"]
 
@@ -35,19 +42,20 @@ def read_code_cells(path=None, raw: bytes | None = None) -> list:
         path = Path(path)
         size = path.stat().st_size
         if size > MAX_NOTEBOOK_BYTES:
-            raise NotebookError(f"the file is {size / 1e6:.1f} MB, more than {MAX_NOTEBOOK_BYTES / 1e6:.0f} MB")
+            raise NotebookError(_("the file is {size} MB, more than {limit} MB").format(
+                size=f"{size / 1e6:.1f}", limit=f"{MAX_NOTEBOOK_BYTES / 1e6:.0f}"))
         raw = path.read_bytes()
     try:
         nb = json.loads(raw.decode("utf-8"))
     except UnicodeDecodeError:
-        raise NotebookError("not a notebook: the file is not UTF-8 text") from None
+        raise NotebookError(_("not a notebook: the file is not UTF-8 text")) from None
     except (ValueError, RecursionError) as e:
-        raise NotebookError(f"not a notebook: the file is not valid JSON ({str(e)[:80]})") from None
+        raise NotebookError(_("not a notebook: the file is not valid JSON ({error})").format(error=str(e)[:80])) from None
     cells = nb.get("cells") if isinstance(nb, dict) else None
     if isinstance(nb, dict) and cells is None and isinstance(nb.get("worksheets"), list):   # nbformat 3
         cells = [c for ws in nb["worksheets"] if isinstance(ws, dict) for c in ws.get("cells", [])]
     if not isinstance(cells, list):
-        raise NotebookError("not a notebook: no list of cells")
+        raise NotebookError(_("not a notebook: no list of cells"))
     out = []
     for number, cell in enumerate(cells, start=1):
         if not isinstance(cell, dict) or cell.get("cell_type") != "code":
@@ -56,12 +64,12 @@ def read_code_cells(path=None, raw: bytes | None = None) -> list:
         if isinstance(source, list):
             source = "".join(s for s in source if isinstance(s, str))
         if not isinstance(source, str):
-            raise NotebookError(f"cell {number} has no readable source")
+            raise NotebookError(_("cell {number} has no readable source").format(number=number))
         out.append((number, source))
-    code = sum(len(source.encode("utf-8", "replace")) for _, source in out)
+    code = sum(len(source.encode("utf-8", "replace")) for _number, source in out)
     if code > MAX_CODE_BYTES:
-        raise NotebookError(f"code too large: the code cells hold {code / 1e6:.1f} MB of code, more than "
-                            f"{MAX_CODE_BYTES / 1e6:g} MB (outputs do not count)")
+        raise NotebookError(_("code too large: the code cells hold {size} MB of code, more than {limit} MB (outputs "
+                              "do not count)").format(size=f"{code / 1e6:.1f}", limit=f"{MAX_CODE_BYTES / 1e6:g}"))
     return out
 
 

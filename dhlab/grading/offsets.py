@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 
 from . import puma
+from .language import _
 
 __all__ = ["parallel_run", "slipped", "advice"]
 
@@ -62,20 +63,22 @@ def advice(ref, i: int, row, rows, miss: float) -> str:
     """What to check when frame i is |miss| metres off along z_{i−1} (see the module)."""
     run = parallel_run(ref, i)
     if len(run) == 1:
-        return f"check d{i} (yours: {row.d.text()})"
+        return _("check d{i} (yours: {d})").format(i=i, d=row.d.text())
     k = slipped(ref, rows, run, miss)
     if k is not None:
         yours = rows[k - 1].d.text()
-        return (f"check d{k} (yours: {yours}): along the parallel axes z{min(run) - 1}…z{i - 1} the offsets "
-                f"{_names(run)} add up, and d{k} is the one that differs from the robot's table")
+        return _("check d{k} (yours: {yours}): along the parallel axes z{first}…z{last} the offsets {names} add up, "
+                 "and d{k} is the one that differs from the robot's table").format(
+            k=k, yours=yours, first=min(run) - 1, last=i - 1, names=_names(run))
     if rows and len(rows) >= i:
         yours = ", ".join(f"d{k} = {rows[k - 1].d.text()}" for k in sorted(run) if _d(rows[k - 1]) is not None)
     else:
         yours = f"d{i} = {row.d.text()}"
-    return (f"check {_names(run)} (yours: {yours}): along the parallel axes z{min(run) - 1}…z{i - 1} these "
-            f"offsets add up, so a slip in any one of them moves x{i} by that much")
+    return _("check {names} (yours: {yours}): along the parallel axes z{first}…z{last} these offsets add up, so a "
+             "slip in any one of them moves x{i} by that much").format(
+        names=_names(run), yours=yours, first=min(run) - 1, last=i - 1, i=i)
 
 
 def _names(run: list) -> str:
     names = [f"d{k}" for k in sorted(run)]
-    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} or {names[-1]}"
+    return names[0] if len(names) == 1 else _("{some} or {last}").format(some=", ".join(names[:-1]), last=names[-1])

@@ -25,6 +25,7 @@ import numpy as np
 
 from . import puma
 from .answers import NOT_ANSWERED, Answers, Row, Unreadable
+from .language import _, case_word
 from .part3 import Analysis, Item, fits, matrix, slips_of
 
 __all__ = ["link_items"]
@@ -35,21 +36,22 @@ def link_items(answers: Answers, analysis: Analysis, ref) -> tuple:
     value = answers.link_points
     items = []
     for k in range(ref.n + 1):
-        label = f"link {k} ({ref.link_names[k]})"
+        label = _("link {k} ({name})").format(k=k, name=_(ref.link_names[k]))     # (the course's catalog names them)
         points = value[k] if isinstance(value, list) and k < len(value) else (
             NOT_ANSWERED if isinstance(value, list) else value)
         if points is NOT_ANSWERED:
-            items.append(Item(label, None, "not answered"))
+            items.append(Item(label, None, _("not answered")))
         elif isinstance(points, Unreadable):                # the whole answer, or this link: say why
             items.append(Item(label, False, points.why))
         else:
             items.append(_check_link(ref, k, label, np.array(points, float), analysis))
     notes = []
     if isinstance(value, list) and len(value) > ref.n + 1:
-        notes.append(f"(link_points has {len(value)} links; the robot has {ref.n + 1}: links 0…{ref.n})")
+        notes.append(_("(link_points has {count} links; the robot has {links}: links 0…{n})").format(
+            count=len(value), links=ref.n + 1, n=ref.n))
     if any(item.ok for item in items[1:]) and not any(isinstance(row, Row) for row in analysis.rows):
-        notes.append(f"(checked by the DH rules alone so far: each link must also be drawn in the frame your "
-                     f"T1…T{ref.n} of part 3 build; they are checked again when you have written them)")
+        notes.append(_("(checked by the DH rules alone so far: each link must also be drawn in the frame your "
+                       "T1…T{n} of part 3 build; they are checked again when you have written them)").format(n=ref.n))
     return items, notes
 
 
@@ -59,35 +61,36 @@ def _last_charged(analysis: Analysis, k: int) -> int:
 
 
 def _check_link(ref, k: int, label: str, P, analysis: Analysis) -> Item:
-    names = [name for name, _ in ref.points[k]]
+    names = [name for name, _point in ref.points[k]]
     W = ref.world_points(k)
     if len(P) != len(W):
-        return Item(label, False, f"give the {len(W)} points {', '.join(names)} in this order; you gave {len(P)}")
+        return Item(label, False, _("give the {count} points {names} in this order; you gave {given}").format(
+            count=len(W), names=", ".join(names), given=len(P)))
     shape = _shape_problem(names, P, W)
     if shape:
         return Item(label, False, shape)
-    _, err = puma.fit_link(ref, k, P)
+    _fit, err = puma.fit_link(ref, k, P)
     if err > puma.TOL_POS:
         return Item(label, False, _frame_problem(ref, k, names, P, W))
     if k == 0:
-        return Item(label, True, "in frame 0")
+        return Item(label, True, _("in frame 0"))
     j = _last_charged(analysis, k)
     if j == 0:                                    # T_1 … T_k all right: the frame they build
         F = analysis.frames[k]
         if _lands(P, F, W):
-            return Item(label, True, f"in your frame {k}, the one your {_rows_text(k)}")
+            return Item(label, True, _("in your frame {k}, the one your {rows}").format(k=k, rows=_rows_text(k)))
         m = _slid_back(ref, analysis, k, P, W)
         if m:
-            return Item(label, True, f"in a valid DH frame {k} that your "
-                                     f"{f'T{m} is' if m == k + 1 else f'T{k + 1}…T{m} are'} written for (T{m} is charged in part 3, "
-                                     f"not this link)")
+            rows = _("T{m} is").format(m=m) if m == k + 1 else _("T{first}…T{m} are").format(first=k + 1, m=m)
+            return Item(label, True, _("in a valid DH frame {k} that your {rows} written for (T{m} is charged in "
+                                       "part 3, not this link)").format(k=k, rows=rows, m=m))
         return Item(label, False, _not_your_frame(k, j, names, P @ F[:3, :3].T + F[:3, 3], W))
     if not any(isinstance(row, Row) for row in analysis.rows):
-        return Item(label, True, f"in a valid DH frame {k}")          # no transformations yet (a note says so)
+        return Item(label, True, _("in a valid DH frame {k}").format(k=k))    # no transformations yet (a note says so)
     if _meant(ref, analysis, j, k, P, W):
-        return Item(label, True, f"in a valid DH frame {k} that your {_rows_text(k, j + 1)} from a frame {j} "
-                                 f"your rows are written for" if j < k else
-                    f"in a valid DH frame {k} (T{k} is charged in part 3, not this link)")
+        return Item(label, True, _("in a valid DH frame {k} that your {rows} from a frame {j} your rows are "
+                                   "written for").format(k=k, rows=_rows_text(k, j + 1), j=j) if j < k else
+                    _("in a valid DH frame {k} (T{k} is charged in part 3, not this link)").format(k=k))
     F = analysis.frames[k]
     return Item(label, False, _not_your_frame(k, j, names, P @ F[:3, :3].T + F[:3, 3], W))
 
@@ -156,7 +159,7 @@ def _drawn_in(ref, k: int, P, W) -> list:
         return []
     out = [G]
     spread = W - W.mean(axis=0)
-    _, sv, Vt = np.linalg.svd(spread)
+    _u, sv, Vt = np.linalg.svd(spread)
     if len(W) > 1 and sv[0] > 1e-9 and (len(sv) < 2 or sv[1] < 1e-6):     # on one line, direction u
         u = Vt[0]
         turn = np.eye(4)
@@ -176,18 +179,19 @@ def _not_your_frame(k: int, j: int, names, placed, W) -> str:
     """A link in a valid frame k that is not the frame the student's transformations give it."""
     miss = np.linalg.norm(placed - W, axis=1)
     p = int(np.argmax(miss))
-    where = (f"placed by them, point {names[p]} lands at {_vec(placed[p])}, {miss[p]:.4f} m from the robot's "
-             f"{names[p]} at {_vec(W[p])}")
+    where = _("placed by them, point {point} lands at {at}, {miss} m from the robot's {point} at {robot}").format(
+        point=names[p], at=_vec(placed[p]), miss=f"{miss[p]:.4f}", robot=_vec(W[p]))
     if j == 0:
-        return (f"drawn in a valid DH frame {k}, but not in the one your {_rows_text(k)}, so your "
-                f"assembled robot draws it elsewhere: {where}; use the same frames in parts 2 and 3")
-    return (f"drawn in a valid DH frame {k}, but not in the one your transformations give it (with T{j}, "
-            f"charged in part 3, read as you meant it, {where}); use the same frames in parts 2 and 3")
+        return _("drawn in a valid DH frame {k}, but not in the one your {rows}, so your assembled robot draws it "
+                 "elsewhere: {where}; use the same frames in parts 2 and 3").format(k=k, rows=_rows_text(k), where=where)
+    return _("drawn in a valid DH frame {k}, but not in the one your transformations give it (with T{j}, charged "
+             "in part 3, read as you meant it, {where}); use the same frames in parts 2 and 3").format(
+        k=k, j=j, where=where)
 
 
 def _rows_text(k: int, first: int = 1) -> str:
     """Who builds frame k: 'T1 builds', 'T1…T3 build' (from T_first)."""
-    return f"T{k} builds" if k == first else f"T{first}…T{k} build"
+    return _("T{k} builds").format(k=k) if k == first else _("T{first}…T{k} build").format(first=first, k=k)
 
 
 def _shape_problem(names, P, W) -> str:
@@ -201,20 +205,20 @@ def _shape_problem(names, P, W) -> str:
     if worst <= puma.TOL_POS:
         return ""
     a, b = pair
-    return (f"these points are not the link's shape: {names[a]}–{names[b]} is "
-            f"{np.linalg.norm(P[a] - P[b]):.4f} m apart in your answer and {np.linalg.norm(W[a] - W[b]):.4f} m "
-            f"on the robot (a coordinate mixed up, or points out of order?)")
+    return _("these points are not the link's shape: {a}–{b} is {yours} m apart in your answer and {robot} m on "
+             "the robot (a coordinate mixed up, or points out of order?)").format(
+        a=names[a], b=names[b], yours=f"{np.linalg.norm(P[a] - P[b]):.4f}", robot=f"{np.linalg.norm(W[a] - W[b]):.4f}")
 
 
 def _frame_problem(ref, k: int, names, P, W) -> str:
     """The link has the right shape but no valid DH frame k puts it there: say why."""
     n = ref.n
     if k == 0:
-        return "link 0 is given in frame 0, the world frame drawn in the figure: its points are the table's"
+        return _("link 0 is given in frame 0, the world frame drawn in the figure: its points are the table's")
     G = _rigid_fit(P, W)
     if G is not None and np.linalg.norm(P @ G[:3, :3].T + G[:3, 3] - W, axis=1).max() > puma.TOL_POS:
-        return ("your coordinates are a mirror image of the link: is your frame right-handed "
-                f"(dextrógiro, y{k} = z{k} × x{k})?")
+        return _("your coordinates are a mirror image of the link: is your frame right-handed "
+                 "(dextrógiro, y{k} = z{k} × x{k})?").format(k=k)
     if G is not None:
         R, o = G[:3, :3], G[:3, 3]
         axis = ref.axes[k] if k < n else ref.axes[n - 1]
@@ -222,29 +226,32 @@ def _frame_problem(ref, k: int, names, P, W) -> str:
         which = int(np.argmax(np.abs(local)))
         joint = k + 1 if k < n else n
         if abs(local[2]) < math.cos(math.radians(puma.TOL_DEG)):
-            where = f"along your local {'xyz'[which]} axis" if abs(local[which]) > 0.999 else "tilted from your z axis"
-            return (f"in its own DH frame the axis of joint {joint} must be the z axis (z{k}: "
-                    f"seed 000, figures 11–12); in your model it lies {where}")
+            where = (_("along your local {axis} axis").format(axis="xyz"[which]) if abs(local[which]) > 0.999
+                     else _("tilted from your z axis"))
+            return _("in its own DH frame the axis of joint {joint} must be the z axis (z{k}: seed 000, figures "
+                     "11–12); in your model it lies {where}").format(joint=joint, k=k, where=where)
         if k == n:
             miss = float(np.linalg.norm(o - ref.end_point))
-            return (f"frame {n}'s origin (the end effector's) is {ref.end_text}; in your model the "
-                    f"origin is {miss:.4f} m from it")
+            return _("frame {n}'s origin (the end effector's) is {end}; in your model the origin is {miss} m "
+                     "from it").format(n=n, end=ref.end_text, miss=f"{miss:.4f}")
         off = axis.distance_to_point(o)
         if ref.kinds[k] == "R" and off > puma.TOL_POS:
-            return (f"z{k} runs along the axis of joint {k + 1}, but your frame's origin is {off:.4f} m off "
-                    f"that axis; the origin of frame {k} lies on it")
+            return _("z{k} runs along the axis of joint {joint}, but your frame's origin is {off} m off that "
+                     "axis; the origin of frame {k} lies on it").format(k=k, joint=k + 1, off=f"{off:.4f}")
         rel = puma.relation(ref.axes[k - 1], ref.axes[k])
         if "P" in ref.kinds[k - 1:k + 1]:
-            return (f"your x{k} must be square to the axes of joints {k} and {k + 1} and cross the line you "
-                    f"chose for z{k - 1} (a sliding joint's axis may be drawn on any line parallel to it, but "
-                    f"x{k} then follows it); in your model it does not")
-        return (f"your x{k} must lie along the common normal of the axes of joints {k} and {k + 1} "
-                f"({rel.kind}: x{k} ⟂ both, crossing the axis of joint {k}); in your model it does not")
-    C, _ = puma.fit_link(ref, k, P)
+            return _("your x{k} must be square to the axes of joints {k} and {next} and cross the line you chose "
+                     "for z{previous} (a sliding joint's axis may be drawn on any line parallel to it, but x{k} "
+                     "then follows it); in your model it does not").format(k=k, next=k + 1, previous=k - 1)
+        return _("your x{k} must lie along the common normal of the axes of joints {k} and {next} ({kind}: x{k} ⟂ "
+                 "both, crossing the axis of joint {k}); in your model it does not").format(
+            k=k, next=k + 1, kind=case_word(rel.kind))
+    C, _err = puma.fit_link(ref, k, P)
     expected = (W - C[:3, 3]) @ C[:3, :3]
     j = int(np.argmax(np.linalg.norm(expected - P, axis=1)))
-    return (f"no valid DH frame {k} gives these coordinates; in the valid frame {k} nearest to your answer, "
-            f"point {names[j]} would be at {_vec(expected[j])}, yours is {_vec(P[j])}")
+    return _("no valid DH frame {k} gives these coordinates; in the valid frame {k} nearest to your answer, point "
+             "{point} would be at {expected}, yours is {yours}").format(
+        k=k, point=names[j], expected=_vec(expected[j]), yours=_vec(P[j]))
 
 
 def _rigid_fit(P, W):
@@ -252,7 +259,7 @@ def _rigid_fit(P, W):
     Pc, Wc = P - P.mean(axis=0), W - W.mean(axis=0)
     if np.linalg.svd(Pc, compute_uv=False)[1] < 1e-6:
         return None
-    U, _, Vt = np.linalg.svd(Pc.T @ Wc)
+    U, _s, Vt = np.linalg.svd(Pc.T @ Wc)
     D = np.diag([1, 1, np.sign(np.linalg.det(Vt.T @ U.T))])
     R = Vt.T @ D @ U.T
     G = np.eye(4)

@@ -46,6 +46,7 @@ import numpy as np
 from . import offsets, puma
 from .answers import NOT_ANSWERED, Answers, Row
 from .chain_motion import chain_matches, random_configurations  # noqa: F401  (part of this module's API)
+from .language import _
 
 __all__ = ["Analysis", "analyse", "rows_of", "matrix", "fits", "slips_of", "diagnose", "chain_matches", "random_configurations",
            "FLIPS"]
@@ -108,20 +109,21 @@ def matrix(row: Row, q: float = 0.0) -> np.ndarray:
 def _structure(ref, i: int, row: Row) -> list:
     """What is wrong with T_i whatever the frames: the joint variable's place (θ_i for a
     joint that turns, d_i for one that slides)."""
-    joint, _, where = row.joint
+    joint, _sign, where = row.joint
     slides = ref.kinds[i - 1] == "P"
     if joint is None:
         if slides:
-            return [f"d{i} has no joint variable: joint {i} slides, so write d{i} = q{i} + (a constant length)"]
-        return [f"θ{i} has no joint variable: joint {i} turns, so write θ{i} = q{i} + (a constant angle)"]
+            return [_("d{i} has no joint variable: joint {i} slides, so write d{i} = q{i} + (a constant length)").format(i=i)]
+        return [_("θ{i} has no joint variable: joint {i} turns, so write θ{i} = q{i} + (a constant angle)").format(i=i)]
     if where == "d" and not slides:
-        return [f"q{i} is in d{i}, which would make joint {i} slide (prismatic); "
-                f"the robot's joint {i} turns: put q{i} in θ{i}"]
+        return [_("q{i} is in d{i}, which would make joint {i} slide (prismatic); the robot's joint {i} turns: "
+                  "put q{i} in θ{i}").format(i=i)]
     if where == "theta" and slides:
-        return [f"q{i} is in θ{i}, which would make joint {i} turn; the robot's joint {i} slides "
-                f"(prismatic): put q{i} in d{i}, and a constant angle in θ{i}"]
+        return [_("q{i} is in θ{i}, which would make joint {i} turn; the robot's joint {i} slides (prismatic): "
+                  "put q{i} in d{i}, and a constant angle in θ{i}").format(i=i)]
     if joint != i:
-        return [f"{'d' if slides else 'θ'}{i} uses q{joint}; each T_i carries its own joint's variable, q{i}"]
+        return [_("{param}{i} uses q{joint}; each T_i carries its own joint's variable, q{i}").format(
+            param="d" if slides else "θ", i=i, joint=joint)]
     return []
 
 
@@ -133,7 +135,7 @@ def _place(ref, i: int, V, row: Row, A, rows=None) -> tuple:
     along = float(V[:3, 2] @ ref.axes[i - 1].direction) > 0
     if (row.joint[1] > 0) != along:
         problems.append(_sense_message(i, row, along))
-    _, angle, dist = puma.nearest_valid_frame(ref, i, F)
+    _frame, angle, dist = puma.nearest_valid_frame(ref, i, F)
     if not (angle <= puma.TOL_DEG and dist <= puma.TOL_POS):
         problems.append(diagnose(ref, i, V, F, row, rows))
     return not problems, F, problems
@@ -168,9 +170,9 @@ def _flip_fixes(i: int, row: Row, how: str) -> list:
     """The parameters of T_i that change when its frame is turned over ``how``."""
     theta, alpha, a = row.theta.const, row.alpha, row.a
     if how == "z":
-        return [f"α{i} = {_angle(alpha + 180)}° instead of {_angle(alpha)}°"]
+        return [_("α{i} = {new}° instead of {old}°").format(i=i, new=_angle(alpha + 180), old=_angle(alpha))]
     new_alpha = -alpha if how == "x" else 180 - alpha
-    fixes = [f"θ{i}'s offset {_angle(theta + 180)}° instead of {_angle(theta)}°"]
+    fixes = [_("θ{i}'s offset {new}° instead of {old}°").format(i=i, new=_angle(theta + 180), old=_angle(theta))]
     if _angle(new_alpha) != _angle(alpha):
         fixes.append(f"α{i} = {_angle(new_alpha)}°")
     if abs(a) > 1e-12:
@@ -180,13 +182,17 @@ def _flip_fixes(i: int, row: Row, how: str) -> list:
 
 def _flip_message(i: int, row: Row, how: str, n: int) -> str:
     """T_i is right up to a flip of its frame, which the rows after it (up to T_n) undo: name the parameter."""
-    axis = {"z": f"z{i}", "x": f"x{i}", "xz": f"x{i} and z{i}"}[how]
-    param = f"α{i}" if how == "z" else f"θ{i}'s offset"
+    axis = {"z": f"z{i}", "x": f"x{i}", "xz": _("x{i} and z{i}").format(i=i)}[how]
+    param = f"α{i}" if how == "z" else _("θ{i}'s offset").format(i=i)
     later = _later_rows(i, n)
-    verb, pronoun = ("is", "it fits") if i + 1 == n else ("are", "they fit")
-    return (f"{param}: your T{i} builds a valid frame {i}, but your {later} {verb} written for "
-            f"frame {i} with {axis} pointing the other way; with {', '.join(_flip_fixes(i, row, how))} {pronoun} "
-            f"(one slip: only T{i} is charged)")
+    fixes = ", ".join(_flip_fixes(i, row, how))
+    if i + 1 == n:
+        return _("{param}: your T{i} builds a valid frame {i}, but your {later} is written for frame {i} with {axis} "
+                 "pointing the other way; with {fixes} it fits (one slip: only T{i} is charged)").format(
+            param=param, i=i, later=later, axis=axis, fixes=fixes)
+    return _("{param}: your T{i} builds a valid frame {i}, but your {later} are written for frame {i} with {axis} "
+             "pointing the other way; with {fixes} they fit (one slip: only T{i} is charged)").format(
+        param=param, i=i, later=later, axis=axis, fixes=fixes)
 
 
 def _later_rows(i: int, n: int) -> str:
@@ -194,7 +200,7 @@ def _later_rows(i: int, n: int) -> str:
     if i + 1 >= n:
         return f"T{n}"
     if i + 2 == n:
-        return f"T{i + 1} and T{n}"
+        return _("T{i} and T{n}").format(i=i + 1, n=n)
     return f"T{i + 1}…T{n}"
 
 
@@ -220,7 +226,7 @@ def analyse(answers: Answers, ref=None) -> Analysis:
         if not isinstance(row, Row):
             structural_ok = False
             item = Item(f"T{i}", None if row is NOT_ANSWERED else False,
-                        "not answered" if row is NOT_ANSWERED else row.why)
+                        _("not answered") if row is NOT_ANSWERED else row.why)
             states = _dedupe([_State(ref.home_frames[i], s.cost + 1, s.charged + (i,), s.items + [item],
                                      s.frames + [ref.home_frames[i]], s.own + [False], s.edits, slack=i) for s in states])
             continue
@@ -250,15 +256,15 @@ def _expand(ref, i: int, rows, A, s: _State) -> list:
             candidates += [(how, s.V @ g, extra) for how, g in FLIPS.items()]
             if prev_charged:                        # T_{i-1} is wrong anyway: any valid frame i-1
                 inverse = np.linalg.inv(A)
-                for _, V, _ in list(candidates):
-                    for G, _, _ in puma.valid_frames_near(ref, i, V @ A):     # the nearest first
+                for _how, V, _extra in list(candidates):
+                    for G, _angle_off, _dist in puma.valid_frames_near(ref, i, V @ A):     # the nearest first
                         W = G @ inverse
                         if puma.is_valid_frame(ref, i - 1, W):
                             candidates.append(("any", W, 0))
         if s.slack is not None and s.slack < i - 1 and not _place(ref, i, s.V, row, A)[0]:
             candidates += _slides(ref, i, s, A)
         for how, V, extra in candidates:
-            ok, F, _ = _place(ref, i, V, row, A)
+            ok, F, _problems = _place(ref, i, V, row, A)
             if not ok:
                 continue
             passed_free = passed_free or not extra
@@ -278,10 +284,10 @@ def _expand(ref, i: int, rows, A, s: _State) -> list:
     if passed_free:                     # a row that fits is never charged for itself
         return out
     # T_i wrong: diagnosed on the frame as it is; carry on from the nearest valid frame i
-    _, F, problems = _place(ref, i, s.V, row, A, rows)
+    _passes, F, problems = _place(ref, i, s.V, row, A, rows)
     if broken:                    # the variable is misplaced: its sense means nothing yet
-        problems = broken + [p for p in problems if not p.startswith(f"joint {i}: a positive")]
-    C, _, _ = puma.nearest_valid_frame(ref, i, F)
+        problems = broken + [p for p in problems if not isinstance(p, SenseProblem)]
+    C, _angle_off, _dist = puma.nearest_valid_frame(ref, i, F)
     edits = FAIL_EDITS if broken or not _one_edit_fits(ref, i, s.V, row) else 1
     out.append(_State(C, s.cost + 1, s.charged + (i,), s.items + [Item(label, False, "; ".join(problems))],
                       s.frames + [C], s.own + [False], s.edits + edits, slack=i))
@@ -294,7 +300,7 @@ def _slides(ref, i: int, s: _State, A) -> list:
     parallel axes slide along them): [("slide", the moved frame i−1, 0)]."""
     F = s.V @ A
     out = []
-    for G, _, _ in puma.valid_frames_near(ref, i, F)[:4]:
+    for G, _angle_off, _dist in puma.valid_frames_near(ref, i, F)[:4]:
         move = np.eye(4)
         move[:3, 3] = G[:3, 3] - F[:3, 3]
         if np.linalg.norm(move[:3, 3]) > 1e-9 and all(puma.is_valid_frame(ref, k, move @ s.frames[k])
@@ -335,34 +341,40 @@ def _dedupe(states) -> list:
 
 # --- the messages -------------------------------------------------------------------------------
 
+class SenseProblem(str):
+    """A message about a joint's positive sense (dropped when the joint variable itself is misplaced)."""
+
+
 def _sense_message(i: int, row: Row, z_along_arrow: bool) -> str:
     if row.joint[2] == "d":
-        return _slide_sense_message(i, row, z_along_arrow)
+        return SenseProblem(_slide_sense_message(i, row, z_along_arrow))
     if z_along_arrow:
-        return (f"joint {i}: a positive q{i} turns the arm the wrong way: your z{i - 1} points along the "
-                f"drawn positive sense of joint {i}, so θ{i} must grow with q{i}; write θ{i} = q{i} + (constant), "
-                f"not {row.theta.text('°')}")
-    return (f"joint {i}: a positive q{i} turns the arm the wrong way: your z{i - 1} points against the "
-            f"drawn positive sense of joint {i}, so θ{i} = {row.theta.text('°')} turns it opposite to the "
-            f"curled arrow; write θ{i} = -q{i} + (constant), or let z{i - 1} point along the arrow")
+        return SenseProblem(_(
+            "joint {i}: a positive q{i} turns the arm the wrong way: your z{previous} points along the drawn positive "
+            "sense of joint {i}, so θ{i} must grow with q{i}; write θ{i} = q{i} + (constant), not {theta}").format(
+            i=i, previous=i - 1, theta=row.theta.text("°")))
+    return SenseProblem(_(
+        "joint {i}: a positive q{i} turns the arm the wrong way: your z{previous} points against the drawn positive "
+        "sense of joint {i}, so θ{i} = {theta} turns it opposite to the curled arrow; write θ{i} = -q{i} + "
+        "(constant), or let z{previous} point along the arrow").format(i=i, previous=i - 1, theta=row.theta.text("°")))
 
 
 def _slide_sense_message(i: int, row: Row, z_along_arrow: bool) -> str:
     if z_along_arrow:
-        return (f"joint {i}: a positive q{i} slides the arm the wrong way: your z{i - 1} points along the "
-                f"drawn positive direction of joint {i}, so d{i} must grow with q{i}; write d{i} = q{i} + "
-                f"(constant), not {row.d.text()}")
-    return (f"joint {i}: a positive q{i} slides the arm the wrong way: your z{i - 1} points against the "
-            f"drawn positive direction of joint {i}, so d{i} = {row.d.text()} moves it opposite to the "
-            f"arrow; write d{i} = -q{i} + (constant), or let z{i - 1} point along the arrow")
+        return _("joint {i}: a positive q{i} slides the arm the wrong way: your z{previous} points along the drawn "
+                 "positive direction of joint {i}, so d{i} must grow with q{i}; write d{i} = q{i} + (constant), "
+                 "not {d}").format(i=i, previous=i - 1, d=row.d.text())
+    return _("joint {i}: a positive q{i} slides the arm the wrong way: your z{previous} points against the drawn "
+             "positive direction of joint {i}, so d{i} = {d} moves it opposite to the arrow; write d{i} = -q{i} + "
+             "(constant), or let z{previous} point along the arrow").format(i=i, previous=i - 1, d=row.d.text())
 
 
 def _line_word(angle: float) -> str:
     if angle < puma.TOL_DEG:
-        return "parallel to"
+        return _("parallel to")
     if abs(angle - 90) < puma.TOL_DEG:
-        return "perpendicular to"
-    return f"at {angle:.1f}° to"
+        return _("perpendicular to")
+    return _("at {angle}° to").format(angle=f"{angle:.1f}")
 
 
 def _vec(v, digits: int = 4) -> str:
@@ -377,70 +389,82 @@ def diagnose(ref, i: int, V, F, row: Row, rows=None) -> str:
     o = F[:3, 3]
     alpha_hint = ""
     if abs(row.alpha) <= 2 * math.pi + 1e-9 and row.alpha not in (0, 0.0):
-        alpha_hint = " (α is in degrees; this looks like radians)"
+        alpha_hint = " " + _("(α is in degrees; this looks like radians)")
     if i == n:
         target = ref.axes[n - 1]
         if abs(float(z @ target.direction)) < math.cos(math.radians(puma.TOL_DEG)):
-            return (f"z{n} should lie along z{n - 1} (the axis of joint {n}: the last frame's z is aligned "
-                    f"with the previous one, seed 000 paso 0); your α{n} = {_g(row.alpha)}° turns it{alpha_hint}")
+            return _("z{n} should lie along z{previous} (the axis of joint {n}: the last frame's z is aligned with the "
+                     "previous one, seed 000 paso 0); your α{n} = {alpha}° turns it").format(
+                n=n, previous=n - 1, alpha=_g(row.alpha)) + alpha_hint
         miss = float(np.linalg.norm(o - ref.end_point))
         along = float((ref.end_point - o) @ z_prev)
-        check = f"check d{n} = {row.d.text()} and a{n} = {_g(row.a)}"
+        check = _("check d{n} = {d} and a{n} = {a}").format(n=n, d=row.d.text(), a=_g(row.a))
         if miss - abs(along) <= puma.TOL_POS and len(offsets.parallel_run(ref, n)) > 1:     # off along z_{n-1} only
             check = offsets.advice(ref, n, row, rows, along)
-        return (f"end effector: frame {n}'s origin should be at {ref.end_text}, {_vec(ref.end_point)} m; "
-                f"yours is {miss:.4f} m away, at {_vec(o)}: {check}")
+        return _("end effector: frame {n}'s origin should be at {end}, {point} m; yours is {miss} m away, at "
+                 "{yours}: {check}").format(n=n, end=ref.end_text, point=_vec(ref.end_point), miss=f"{miss:.4f}",
+                                            yours=_vec(o), check=check)
     L_prev, L_next = ref.axes[i - 1], ref.axes[i]
     rel = puma.relation(L_prev, L_next)
     ang_st = math.degrees(math.acos(min(1.0, abs(float(z_prev @ z)))))
-    joint = f"joint {i + 1}"
+    joint = _("joint {j}").format(j=i + 1)
     if abs(ang_st - rel.acute) > puma.TOL_DEG:
-        verb = "leaves it parallel" if ang_st < puma.TOL_DEG else "turns it"
-        return (f"{joint}: z{i} should be {_line_word(rel.acute)} z{i - 1}; your α{i} = {_g(row.alpha)}° "
-                f"{verb}{alpha_hint} (the axis of {joint} is {_line_word(rel.acute)} the axis of joint {i})")
+        verb = _("leaves it parallel") if ang_st < puma.TOL_DEG else _("turns it")
+        return _("{joint}: z{i} should be {line} z{previous}; your α{i} = {alpha}° {verb}{hint} (the axis of {joint} "
+                 "is {line} the axis of joint {i})").format(joint=joint, i=i, line=_line_word(rel.acute),
+                                                            previous=i - 1, alpha=_g(row.alpha), verb=verb,
+                                                            hint=alpha_hint)
     if abs(float(z @ L_next.direction)) < math.cos(math.radians(puma.TOL_DEG)):
-        return (f"{joint}: z{i} is {_line_word(rel.acute)} z{i - 1} as it should be, but points the wrong way "
-                f"at the home pose: x{i} must lie along the common normal of z{i - 1} and z{i} "
-                f"(at home, along ±{_vec(rel.normal, 3)}); check the constant in θ{i} "
-                f"(yours: {_g(row.theta.const)}°) and the sign of α{i}")
+        return _("{joint}: z{i} is {line} z{previous} as it should be, but points the wrong way at the home pose: "
+                 "x{i} must lie along the common normal of z{previous} and z{i} (at home, along ±{normal}); check "
+                 "the constant in θ{i} (yours: {theta}°) and the sign of α{i}").format(
+            joint=joint, i=i, line=_line_word(rel.acute), previous=i - 1, normal=_vec(rel.normal, 3),
+            theta=_g(row.theta.const))
     if "P" in ref.kinds[i - 1:i + 1]:             # a sliding joint's line is the student's: no distances
         return _sliding_problem(ref, i, F, row)
     if abs(abs(row.a) - rel.distance) > puma.TOL_POS:
-        should = (f"should meet z{i - 1} (a{i} = 0)" if rel.kind == "intersect" else
-                  f"should be {rel.distance:.4g} m from z{i - 1} (the length of their common normal, |a{i}|)")
-        return f"{joint}: z{i} {should}; your a{i} = {_g(row.a)}"
+        should = (_("should meet z{previous} (a{i} = 0)").format(previous=i - 1, i=i) if rel.kind == "intersect" else
+                  _("should be {distance} m from z{previous} (the length of their common normal, |a{i}|)").format(
+                      distance=f"{rel.distance:.4g}", previous=i - 1, i=i))
+        return _("{joint}: z{i} {should}; your a{i} = {a}").format(joint=joint, i=i, should=should, a=_g(row.a))
     turned = math.degrees(math.acos(min(1.0, abs(float(F[:3, 0] @ rel.normal)))))     # x_i's line and the normal's
     if rel.kind in ("parallel", "skew") and turned > puma.TOL_DEG:
-        return (f"{joint}: x{i} must lie along the common normal of z{i - 1} and z{i} (at home, along "
-                f"±{_vec(rel.normal, 3)}); yours is turned {turned:.0f}° from it about z{i - 1}: check the "
-                f"constant in θ{i} (yours: {_g(row.theta.const)}°)")
+        return _("{joint}: x{i} must lie along the common normal of z{previous} and z{i} (at home, along ±{normal}); "
+                 "yours is turned {turned}° from it about z{previous}: check the constant in θ{i} (yours: "
+                 "{theta}°)").format(joint=joint, i=i, previous=i - 1, normal=_vec(rel.normal, 3),
+                                     turned=f"{turned:.0f}", theta=_g(row.theta.const))
     if rel.kind in ("parallel", "skew") and float(row.a * F[:3, 0] @ rel.normal) < 0:
-        return (f"{joint}: z{i} is {rel.distance:.4g} m from z{i - 1} as it should be, but on the wrong side "
-                f"at the home pose: x{i} points from z{i - 1} towards z{i}; check the constant in θ{i} "
-                f"(yours: {_g(row.theta.const)}°) or the sign of a{i}")
+        return _("{joint}: z{i} is {distance} m from z{previous} as it should be, but on the wrong side at the home "
+                 "pose: x{i} points from z{previous} towards z{i}; check the constant in θ{i} (yours: {theta}°) or "
+                 "the sign of a{i}").format(joint=joint, i=i, distance=f"{rel.distance:.4g}", previous=i - 1,
+                                            theta=_g(row.theta.const))
     # right direction and distance: x_i crosses z_{i-1} at the wrong height (d_i)
     crossing = o - row.a * F[:3, 0]
     target = rel.foot - (rel.distance * rel.normal if rel.kind == "skew" else 0.0)
     shift = float((target - crossing) @ z_prev)
     if abs(shift) <= puma.TOL_POS:                # no distance to quote: the frame is off in another way
-        return (f"frame {i} is not a valid DH frame for {joint}: check the constant in θ{i} "
-                f"(yours: {_g(row.theta.const)}°) and α{i} (yours: {_g(row.alpha)}°)")
-    return (f"{joint}: x{i} must cross z{i - 1} where the common normal of z{i - 1} and z{i} does; yours "
-            f"crosses it {abs(shift):.4g} m {'short of' if shift > 0 else 'past'} that point (along z{i - 1}): "
-            f"{offsets.advice(ref, i, row, rows, shift)}")
+        return _("frame {i} is not a valid DH frame for {joint}: check the constant in θ{i} (yours: {theta}°) and "
+                 "α{i} (yours: {alpha}°)").format(i=i, joint=joint, theta=_g(row.theta.const), alpha=_g(row.alpha))
+    where = _("short of") if shift > 0 else _("past")
+    return _("{joint}: x{i} must cross z{previous} where the common normal of z{previous} and z{i} does; yours "
+             "crosses it {shift} m {where} that point (along z{previous}): {advice}").format(
+        joint=joint, i=i, previous=i - 1, shift=f"{abs(shift):.4g}", where=where,
+        advice=offsets.advice(ref, i, row, rows, shift))
 
 
 def _sliding_problem(ref, i: int, F, row: Row) -> str:
     """Why frame i, next to a sliding joint and with z_i in the right direction, is not valid."""
-    joint = f"joint {i + 1}"
+    joint = _("joint {j}").format(j=i + 1)
     off = ref.axes[i].distance_to_point(F[:3, 3])
     if ref.kinds[i] == "R" and off > puma.TOL_POS:
         before = ""
         if ref.kinds[i - 1] == "P" and i > 1:       # T_{i-1} placed the sliding line: its d and a move it too
-            before = (f" — or d{i - 1} and a{i - 1}: they place the line of sliding joint {i} (any line parallel "
-                      f"to its axis is valid), and z{i} moves with it")
-        return (f"{joint}: z{i} must lie on the axis of {joint}, the line it turns about; yours is {off:.4g} m "
-                f"from it at the home pose: check a{i} (yours: {_g(row.a)}), d{i} (yours: {row.d.text()}) and "
-                f"the constant in θ{i} (yours: {_g(row.theta.const)}°){before}")
-    return (f"frame {i} is not a valid DH frame: x{i} must be square to z{i - 1} and z{i} (the directions of the "
-            f"axes of joints {i} and {i + 1}) and z{i} along the axis of {joint}; check θ{i} and α{i}")
+            before = " — " + _("or d{previous} and a{previous}: they place the line of sliding joint {i} (any line "
+                               "parallel to its axis is valid), and z{i} moves with it").format(previous=i - 1, i=i)
+        return _("{joint}: z{i} must lie on the axis of {joint}, the line it turns about; yours is {off} m from it at "
+                 "the home pose: check a{i} (yours: {a}), d{i} (yours: {d}) and the constant in θ{i} (yours: "
+                 "{theta}°)").format(joint=joint, i=i, off=f"{off:.4g}", a=_g(row.a), d=row.d.text(),
+                                     theta=_g(row.theta.const)) + before
+    return _("frame {i} is not a valid DH frame: x{i} must be square to z{previous} and z{i} (the directions of the "
+             "axes of joints {i} and {next}) and z{i} along the axis of {joint}; check θ{i} and α{i}").format(
+        i=i, previous=i - 1, next=i + 1, joint=joint)

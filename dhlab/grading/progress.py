@@ -8,6 +8,8 @@ from __future__ import annotations
 import sys
 import time
 
+from .language import N_, _
+
 __all__ = ["Progress", "STATUS_KINDS"]
 
 
@@ -26,7 +28,7 @@ class Progress:
         width = 30
         filled = int(width * self.done / max(self.total, 1))
         bar = "#" * filled + "-" * (width - filled)
-        score = f"{row['score']}/{row['max_score']}" if row["score"] != "" else "not graded"
+        score = f"{row['score']}/{row['max_score']}" if row["score"] != "" else _("not graded")
         line = f"[{bar}] {self.done}/{self.total}  {row['submission']}: {score}  {row['status'][:60]}"
         if self.tty:
             self.stream.write("\r" + line[:120].ljust(120))
@@ -37,14 +39,16 @@ class Progress:
         self.stream.flush()
 
 
-STATUS_KINDS = [("ok", "ok"), ("not answered", "not answered"), ("invalid notebook", "invalid notebook"),
-                ("error in cell", "errors"), ("memory limit", "memory limit"), ("timeout", "timeout"),
-                ("output limit", "output limit"), ("kernel died", "kernel died"),
-                ("could not be interrupted", "hung"), ("runner was killed", "runner killed"),
-                ("time limit for the whole", "notebook time limit"), ("answers not read", "answers not read"),
-                ("modifies dhlab", "modifies dhlab"), ("grader error", "grader error"),
-                ("variant missing", "variant missing"), ("variant tampered", "variant tampered"),
-                ("variant other_student", "a classmate's variant"), ("student not identified", "student unknown")]
+# (the start of a status, as dhlab.grading.gradebook writes it in the teacher's language; its label)
+STATUS_KINDS = [("ok", "ok"), (N_("not answered"), N_("not answered")), (N_("invalid notebook"), N_("invalid notebook")),
+                (N_("error in cell"), N_("errors")), (N_("memory limit"), N_("memory limit")),
+                (N_("timeout"), N_("timeout")), (N_("output limit"), N_("output limit")),
+                (N_("kernel died"), N_("kernel died")), (N_("could not be interrupted"), N_("hung")),
+                (N_("runner was killed"), N_("runner killed")), (N_("time limit for the whole"), N_("notebook time limit")),
+                (N_("answers not read"), N_("answers not read")), (N_("modifies dhlab"), N_("modifies dhlab")),
+                ("grader error", "grader error"), (N_("variant missing"), N_("variant missing")),
+                (N_("variant tampered"), N_("variant tampered")), (N_("variant other_student"), N_("a classmate's variant")),
+                (N_("student not identified"), N_("student unknown"))]
 
 
 def _summary(rows, seconds, jobs) -> str:
@@ -52,14 +56,20 @@ def _summary(rows, seconds, jobs) -> str:
     n = len(rows)
     scored = [r for r in rows if r["score"] != ""]          # a grader error has no score
     scores = [float(r["score"]) for r in scored]
-    counts = {label: sum(1 for r in rows if (r["status"] == key if key in ("ok", "not answered") else key in r["status"]))
-              for key, label in STATUS_KINDS}
+    counts = {}
+    for key, label in STATUS_KINDS:
+        key = _(key)
+        counts[_(label)] = sum(1 for r in rows if (r["status"] == key if key in ("ok", _("not answered"))
+                                                   else key in r["status"]))
     per = seconds / n if n else 0.0
     full = sum(1 for r in scored if float(r["score"]) == float(r["max_score"]))
-    mean = f"Mean score {sum(scores) / len(scores):.2f}/{rows[0]['max_score']}" if scores else "No score"
+    mean = (_("Mean score {mean}/{max}").format(mean=f"{sum(scores) / len(scores):.2f}", max=rows[0]["max_score"])
+            if scores else _("No score"))
     left = n - len(scored)
-    again = f"; not graded (grader error): {left}, run the same command with --resume" if left else ""
+    again = _("; not graded (grader error): {left}, run the same command with --resume").format(left=left) if left else ""
+    graded = (_("Graded {n} submission in {seconds} s with -j {jobs} ({per} s per submission).") if n == 1 else
+              _("Graded {n} submissions in {seconds} s with -j {jobs} ({per} s per submission)."))
     return "\n".join([
-        f"Graded {n} submission{'s' if n != 1 else ''} in {seconds:.1f} s with -j {jobs} ({per:.2f} s per submission).",
-        f"{mean}; full marks: {full}{again}.",
-        "Status: " + ", ".join(f"{label} {c}" for label, c in counts.items() if c)])
+        graded.format(n=n, seconds=f"{seconds:.1f}", jobs=jobs, per=f"{per:.2f}"),
+        _("{mean}; full marks: {full}{again}.").format(mean=mean, full=full, again=again),
+        _("Status: {counts}").format(counts=", ".join(f"{label} {c}" for label, c in counts.items() if c))])

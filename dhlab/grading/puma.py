@@ -33,6 +33,7 @@ from ..lines import Line, LineRelation
 from ..lines import relation as line_relation
 from .frames import (FrameFamily, dh_rows_from_frames, fit_link, frame_family, is_valid_frame,  # noqa: F401
                      nearest_valid_frame, random_valid_frames, rotation_angle, valid_frames_near)
+from .language import N_, _
 
 __all__ = ["Line", "relation", "Reference", "reference", "LINK_NAMES",
            "dh_frames", "TOL_POS", "TOL_DEG"]
@@ -40,7 +41,8 @@ __all__ = ["Line", "relation", "Reference", "reference", "LINK_NAMES",
 TOL_POS = 2e-3        # metres: a student who types 0.15 for 0.15005 is right
 TOL_DEG = 0.5         # degrees, for directions
 
-LINK_NAMES = ["base (pedestal)", "trunk", "upper arm", "forearm", "wrist yoke", "wrist", "gripper"]
+LINK_NAMES = [N_("base (pedestal)"), N_("trunk"), N_("upper arm"), N_("forearm"), N_("wrist yoke"), N_("wrist"),
+              N_("gripper")]               # (translated where shown: dhlab.grading.part2)
 
 
 def relation(l1: Line, l2: Line, tol: float = TOL_POS) -> LineRelation:
@@ -110,7 +112,7 @@ class Reference:
     @property
     def end_text(self) -> str:
         """How the feedback names frame n's origin."""
-        return "the wrist centre W, where the axes of joints 4, 5 and 6 meet"
+        return _("the wrist centre W, where the axes of joints 4, 5 and 6 meet")
 
     def frames(self, Q) -> np.ndarray:
         return dh_frames(self.rows, Q)
@@ -121,7 +123,7 @@ class Reference:
         return F[:, :-1, :3, 3], F[:, :-1, :3, 2]
 
     def world_points(self, k: int) -> np.ndarray:
-        return np.array([p for _, p in self.points[k]])
+        return np.array([p for _name, p in self.points[k]])
 
     def local_points(self, k: int) -> np.ndarray:
         """Link k's points in the reference DH frame k (one valid answer of part 2)."""

@@ -2,6 +2,7 @@
 
     dhlab-assign release ROSTER.csv -o release/ [--family puma560|kr5,ur5|all]
                          [--secret-file dhlab-secret.key] [--id-column id] [--template NOTEBOOK] [--figures]
+                         [--language en|es]
 
 For every row of the roster (a CSV file with a header; the id column is ``id``,
 ``student_id``, ``student``, ``username`` or ``login``, or the one ``--id-column`` names)
@@ -14,6 +15,12 @@ notebook's metadata (``metadata["dhlab"]``). The same roster and secret always g
 byte-identical notebooks. ``release/_teacher/`` keeps the teacher's copy of every
 variant (``variants.json``) and which file is whose (``manifest.csv``): hand out only
 the ``.ipynb`` files.
+
+**The student's language** (:mod:`dhlab.grading.release_language`): ``--language es`` releases
+the notebooks in Spanish; a roster column ``language`` (or ``idioma``) with ``en``/``es`` per
+student overrides it, so a class may mix; the default is ``DHLAB_LANGUAGE``, else English. The
+language is recorded in ``metadata["dhlab"]["language"]`` and said in the set-up cell
+(``dhlab.set_language("es")``); the grader writes each student's feedback in it.
 
 **The seam for the grader.** The released notebook's locked cell ``your_robot`` calls
 ``use_variant(<the variant>, student_id=…)`` (:func:`dhlab.course.family_notebook.use_variant`),
@@ -37,6 +44,8 @@ from pathlib import Path
 from ..course.family_notebook import SEAM_CELL_ID, prepare_submission, release_notebook, seam_source
 from ..validation import DHLabError
 from . import variants as V
+from .language import _, language_option
+from .release_language import default_language, in_language, in_spanish, mark_language, roster_languages
 
 __all__ = ["read_roster", "safe_filename", "release_notebook", "release", "main", "TEMPLATE",
            "ID_COLUMNS", "SEAM_CELL_ID", "DEFAULT_SECRET_FILE", "seam_source", "load_teacher_records",
@@ -173,10 +182,12 @@ def _dumps(nb: dict) -> str:
 
 
 def release(roster, out, secret: bytes, families=None, id_column=None, template=TEMPLATE,
-            figures: bool = False) -> list:
+            figures: bool = False, language: str | None = None) -> list:
     """Write one notebook per student of ``roster`` into ``out`` (see the module); returns
-    the manifest rows (student id, file, family, fingerprint)."""
+    the manifest rows (student id, file, family, fingerprint, language). ``language``: the
+    notebooks' language where the roster has no language column (default ``DHLAB_LANGUAGE``, else 'en')."""
     ids = read_roster(roster, id_column)
+    languages = roster_languages(csv_rows(Path(roster)), ids, default_language(language), Path(roster).name)
     names = {}
     for sid in ids:
         name = safe_filename(sid)
@@ -190,22 +201,28 @@ def release(roster, out, secret: bytes, families=None, id_column=None, template=
     manifest, teacher, notes = [], {}, set()
     for sid in ids:
         record = V.sign(chosen[sid], sid, secret)
-        nb, cell_notes = release_notebook(tpl, record, figures)
+        with in_language(languages[sid]):               # the figure's and tables' words too
+            nb, cell_notes = release_notebook(tpl, record, figures)
+            if languages[sid] == "es":
+                nb = in_spanish(nb, tpl, record, notes)
+        mark_language(nb, languages[sid])
         notes.update(cell_notes)
         file = f"{safe_filename(sid)}.ipynb"
         (out / file).write_text(_dumps(nb), encoding="utf-8")
         fp = V.fingerprint(chosen[sid])
-        manifest.append({"student_id": sid, "file": file, "family": chosen[sid].family, "fingerprint": fp})
+        manifest.append({"student_id": sid, "file": file, "family": chosen[sid].family, "fingerprint": fp,
+                         "language": languages[sid]})
         teacher[sid] = record
     buffer = io.StringIO()
-    writer = csv.DictWriter(buffer, ["student_id", "file", "family", "fingerprint"], lineterminator="\n")
+    writer = csv.DictWriter(buffer, ["student_id", "file", "family", "fingerprint", "language"],
+                            lineterminator="\n")
     writer.writeheader()
     writer.writerows(manifest)
     (out / "_teacher" / "manifest.csv").write_text(buffer.getvalue(), encoding="utf-8")
     (out / "_teacher" / "variants.json").write_text(
         json.dumps(teacher, sort_keys=True, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
     for note in sorted(notes):
-        print(f"dhlab-assign: note: {note}", file=sys.stderr)
+        print(_("dhlab-assign: note: {note}").format(note=note), file=sys.stderr)
     return manifest
 
 
@@ -256,33 +273,56 @@ def _secret(path) -> bytes:
 
 
 def main(argv=None) -> int:
-    """``dhlab-assign release ROSTER.csv -o OUT`` (see the module). Returns the exit code."""
-    parser = argparse.ArgumentParser(prog="dhlab-assign", description="Release the DH assignment: one "
-                                     "personal robot and notebook per student.")
+    """``dhlab-assign release ROSTER.csv -o OUT`` (see the module). Returns the exit code. The command
+    speaks the teacher's language (``--language``, else ``DHLAB_LANGUAGE``), which is also the
+    notebooks' language where the roster has no language column."""
+    from ..i18n import set_language
+    argv = sys.argv[1:] if argv is None else list(argv)
+    try:
+        previous = set_language(language_option(argv))
+    except DHLabError as exc:
+        print(f"dhlab-assign: error: {exc}", file=sys.stderr)
+        return 2
+    try:
+        return _main(argv)
+    finally:
+        set_language(previous)
+
+
+def _main(argv) -> int:
+    parser = argparse.ArgumentParser(prog="dhlab-assign", description=_(
+        "Release the DH assignment: one personal robot and notebook per student."))
     sub = parser.add_subparsers(dest="command", required=True)
-    rel = sub.add_parser("release", help="write one notebook per student of a roster")
-    rel.add_argument("roster", help="CSV file with a header and one row per student")
-    rel.add_argument("-o", "--output", required=True, help="folder for the notebooks")
+    rel = sub.add_parser("release", help=_("write one notebook per student of a roster"))
+    rel.add_argument("roster", help=_("CSV file with a header and one row per student"))
+    rel.add_argument("-o", "--output", required=True, help=_("folder for the notebooks"))
     rel.add_argument("--family", default="puma560",
-                     help="robot(s) to draw from: a key, a comma-separated list, or 'all' (default puma560)")
+                     help=_("robot(s) to draw from: a key, a comma-separated list, or 'all' (default puma560)"))
     rel.add_argument("--secret-file", default=None,
-                     help=f"the teacher's secret (default {DEFAULT_SECRET_FILE}, made when missing)")
-    rel.add_argument("--id-column", default=None, help=f"the roster's id column (default: {', '.join(ID_COLUMNS)})")
-    rel.add_argument("--template", default=str(TEMPLATE), help="the student notebook to start from")
+                     help=_("the teacher's secret (default {file}, made when missing)").format(file=DEFAULT_SECRET_FILE))
+    rel.add_argument("--id-column", default=None,
+                     help=_("the roster's id column (default: {names})").format(names=", ".join(ID_COLUMNS)))
+    rel.add_argument("--template", default=str(TEMPLATE), help=_("the student notebook to start from"))
     rel.add_argument("--figures", action="store_true",
-                     help="store the robot's picture in each notebook (about 0.5 s per student more; "
-                          "without it the picture is drawn when the student runs the cell)")
+                     help=_("store the robot's picture in each notebook (about 0.5 s per student more; "
+                            "without it the picture is drawn when the student runs the cell)"))
+    rel.add_argument("--language", default=None,
+                     help=_("the notebooks' language, en or es, where the roster has no 'language' (or 'idioma') "
+                            "column; also this command's (default: DHLAB_LANGUAGE, else en)"))
     args = parser.parse_args(argv)
     try:
         secret = _secret(args.secret_file)
         rows = release(args.roster, args.output, secret, args.family, args.id_column, args.template,
-                       figures=args.figures)
+                       figures=args.figures, language=args.language)
     except DHLabError as exc:
         print(f"dhlab-assign: error: {exc}", file=sys.stderr)
         return 2
     families = sorted({r["family"] for r in rows})
-    print(f"dhlab-assign: {len(rows)} notebooks in {args.output} ({', '.join(families)}); "
-          f"the teacher's record is in {Path(args.output) / '_teacher'}")
+    counts = ", ".join(f"{language} {sum(1 for r in rows if r['language'] == language)}"
+                       for language in sorted({r["language"] for r in rows}))
+    print(_("dhlab-assign: {count} notebooks in {folder} ({families}; {languages}); the teacher's record is in "
+            "{record}").format(count=len(rows), folder=args.output, families=", ".join(families), languages=counts,
+                               record=Path(args.output) / "_teacher"))
     return 0
 
 

@@ -6,11 +6,16 @@ answers as plain data, and they are scored **here**, by :mod:`dhlab.grading.chec
 the PUMA 560 or the student's own robot (``staged.variant``). The other helpers make the row
 of a submission that was not graded (a variant with no marks, a grader error: never a 0 that
 looks like a mark).
+
+Two languages (:mod:`dhlab.grading.language`): the row's status is in the teacher's (the
+grader's language, ``dhlab-grade --language``), the feedback file and the Gradescope tests'
+text in the student's (``staged.language``: the submitted notebook's own).
 """
 from __future__ import annotations
 
 import time
 
+from .language import _, current_language, speaking
 from .launch import run_submission
 
 __all__ = ["grade_submission"]
@@ -37,23 +42,37 @@ def grade_submission(staged, options, iso=None, hide=()) -> dict:
     if iso is not None and iso.note():
         run["isolation_note"] = iso.note()
     if run.get("grader_error"):                   # the grader failed, not the student: no score
-        return _grader_error_row(staged, status_text(run, report_answered=False))
+        return _grader_error_row(staged, run)
     cells = _cells_of(staged)
-    answers, problem = Answers(), ""
-    if run.get("answers_json"):
-        try:
-            answers = parse_json(run["answers_json"], robot.n if robot is not None else N_JOINTS)
-        except ValueError as e:
-            problem = f"answers not read: {e}"
-    report = checks.check_all(answers, ref=robot)
-    unreadable = [name for name, value in answers.items() if isinstance(value, Unreadable)]
-    if unreadable and not problem:
-        problem = f"unreadable answers: {', '.join(unreadable)}"
-    _mark_unread(report, run, cells)
-    status = status_text(run, report_answered=answers.answered(), answers_problem=problem, cells=cells)
-    note = GV.status_note(info)
-    if note:
-        status = note if status == "ok" else f"{note}; {status}"
+    n = robot.n if robot is not None else N_JOINTS
+
+    def read_answers():
+        """The answers, and what kept some from being read (in the current language)."""
+        answers, problem = Answers(), ""
+        if run.get("answers_json"):
+            try:
+                answers = parse_json(run["answers_json"], n)
+            except ValueError as e:
+                problem = _("answers not read: {why}").format(why=e)
+        unreadable = [name for name, value in answers.items() if isinstance(value, Unreadable)]
+        if unreadable and not problem:
+            problem = _("unreadable answers: {names}").format(names=", ".join(unreadable))
+        return answers, problem
+
+    def status_of(answers, problem):
+        status = status_text(run, report_answered=answers.answered(), answers_problem=problem, cells=cells)
+        note = GV.status_note(info)
+        return (note if status == "ok" else f"{note}; {status}") if note else status
+
+    with speaking(current_language()):            # the teacher's: the gradebook's status column
+        status = status_of(*read_answers())
+    with speaking(_language(staged)):             # the student's: the feedback
+        answers, problem = read_answers()
+        report = checks.check_all(answers, ref=robot)
+        _mark_unread(report, run, cells)
+        feedback = feedback_text(staged.submission, run, report, status_of(answers, problem),
+                                 GV.feedback_lines(info), cells)
+        part_text = {part.key: part.text() for part in report.parts}     # Gradescope's tests (gradescope.py)
     row = {"submission": staged.submission, "score": f"{report.score:g}", "max_score": report.max_score,
            "status": status, "seconds": f"{time.monotonic() - started:.1f}",
            "feedback": feedback_filename(staged.submission), "file": staged.file, "sha256": staged.sha256}
@@ -61,9 +80,15 @@ def grade_submission(staged, options, iso=None, hide=()) -> dict:
         row[PART_COLUMNS[part.key]] = f"{part.score:g}"
     if info is not None:
         row.update(GV.columns(info))
-    row["_feedback_text"] = feedback_text(staged.submission, run, report, status, GV.feedback_lines(info), cells)
-    row["_part_text"] = {part.key: part.text() for part in report.parts}     # Gradescope's tests (gradescope.py)
+    row["_feedback_text"] = feedback
+    row["_part_text"] = part_text
+    row["_language"] = _language(staged)
     return row
+
+
+def _language(staged) -> str:
+    """The student's language: the submitted notebook's (staging read it), else the grader's."""
+    return getattr(staged, "language", "") or current_language()
 
 
 def _cells_of(staged):
@@ -98,31 +123,38 @@ def _not_graded_row(staged, info) -> dict:
     row = {"submission": staged.submission, "score": "0", "max_score": sum(POINTS.values()), "status": status,
            "seconds": "0.0", "feedback": feedback_filename(staged.submission), "file": staged.file,
            "sha256": staged.sha256, **{c: "0" for c in PART_COLUMNS.values()}, **GV.columns(info)}
-    row["_feedback_text"] = (f"Submission: {staged.submission}\nFile: {staged.file}\nStatus: {status}\n\n"
-                             "Not graded: your teacher will look at this submission.\n")
+    with speaking(_language(staged)):
+        row["_feedback_text"] = "\n".join([
+            _("Submission: {submission}").format(submission=staged.submission), _("File: {file}").format(file=staged.file),
+            _("Status: {status}").format(status=GV.status_note(info)), "",
+            _("Not graded: your teacher will look at this submission."), ""])
+    row["_language"] = _language(staged)
     return row
 
 
 def _error_row(staged, exc) -> dict:
     """The row of a submission the grader itself failed on (it keeps the batch going)."""
-    from .gradebook import status_text
-    return _grader_error_row(staged, status_text({"grader_error": f"{type(exc).__name__}: {str(exc)[:150]}"},
-                                                 report_answered=False))
+    return _grader_error_row(staged, {"grader_error": f"{type(exc).__name__}: {str(exc)[:150]}"})
 
 
-def _grader_error_row(staged, status: str) -> dict:
+def _grader_error_row(staged, run: dict) -> dict:
     """Not graded, because the grader failed: the score and the parts are left empty (a 0 would
     read as the student's), the feedback says so, and ``--resume`` grades it again."""
     from . import grade_variants as GV
     from .checks import POINTS
-    from .gradebook import PART_COLUMNS, feedback_filename, not_graded_feedback
-    note = GV.status_note(staged.variant)
-    status = f"{note}; {status}" if note else status
+    from .gradebook import PART_COLUMNS, feedback_filename, not_graded_feedback, status_text
+
+    def status_now():
+        status, note = status_text(run, report_answered=False), GV.status_note(staged.variant)
+        return f"{note}; {status}" if note else status
+    status = status_now()                         # in the teacher's language
     row = {"submission": staged.submission, "score": "", "max_score": sum(POINTS.values()), "status": status,
            "seconds": "0", "feedback": feedback_filename(staged.submission), "file": staged.file,
            "sha256": staged.sha256, **{c: "" for c in PART_COLUMNS.values()}}
     if staged.variant is not None:
         row.update(GV.columns(staged.variant))
-    row["_feedback_text"] = not_graded_feedback(staged.submission, staged.file, status,
-                                                GV.feedback_lines(staged.variant))
+    with speaking(_language(staged)):
+        row["_feedback_text"] = not_graded_feedback(staged.submission, staged.file, status_now(),
+                                                    GV.feedback_lines(staged.variant))
+    row["_language"] = _language(staged)
     return row

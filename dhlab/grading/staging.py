@@ -13,7 +13,10 @@ its code cells, numbered as in Jupyter. So:
   changed since its row was written;
 * with personal variants (``--secret-file``, :mod:`dhlab.grading.grade_variants`) the
   notebook's signed record is verified here, in the grader's process, and the copy's
-  "Your robot" cell is rewritten from the variant it will be graded against.
+  "Your robot" cell is rewritten from the variant it will be graded against;
+* the notebook's language is read here too (``metadata["dhlab"]["language"]``, else its
+  ``dhlab.set_language`` call: :func:`dhlab.grading.release_language.notebook_language`): the
+  student's feedback is written in it.
 """
 from __future__ import annotations
 
@@ -24,6 +27,8 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
+from .language import _
+from .release_language import raw_notebook_language
 from .runner import MAX_NOTEBOOK_BYTES, NotebookError, read_code_cells
 
 __all__ = ["Staged", "stage", "stage_all", "find_submissions"]
@@ -38,6 +43,7 @@ class Staged:
     copy: Path | None        # the code-only copy, None when the file cannot be run (or is not run)
     error: str = ""          # why it cannot be run
     variant: object = None   # with variants: the VariantInfo it is graded by (dhlab.grading.grade_variants)
+    language: str = ""       # the student's language ('en'/'es'; '' when the notebook does not say)
 
 
 def find_submissions(folder: Path) -> list:
@@ -60,26 +66,28 @@ def stage(path: Path, folder: Path, into: Path, index: int, resolve=None) -> Sta
     try:
         size = path.stat().st_size
         if size > MAX_NOTEBOOK_BYTES:
-            raise NotebookError(f"the file is {size / 1e6:.0f} MB, more than {MAX_NOTEBOOK_BYTES / 1e6:.0f} MB")
+            raise NotebookError(_("the file is {size} MB, more than {limit} MB").format(
+                size=f"{size / 1e6:.0f}", limit=f"{MAX_NOTEBOOK_BYTES / 1e6:.0f}"))
         raw = path.read_bytes()
     except OSError as e:
-        return Staged(submission, file, "", None, f"cannot read the file ({e.strerror or e})")
+        return Staged(submission, file, "", None, _("cannot read the file ({error})").format(error=e.strerror or e))
     except NotebookError as e:
         return Staged(submission, file, "", None, str(e))
     digest = hashlib.sha256(raw).hexdigest()
+    language = raw_notebook_language(raw) or ""
     info = None
     if resolve is not None:
         from .grade_variants import read_notebook
         nb = read_notebook(raw)
         prepared, info = resolve(nb, file)
         if info.variant is None:
-            return Staged(submission, file, digest, None, variant=info)
+            return Staged(submission, file, digest, None, variant=info, language=language)
         if isinstance(prepared, dict) and prepared is not nb:
             raw = json.dumps(prepared).encode("utf-8")
     try:
         cells = read_code_cells(raw=raw)
     except NotebookError as e:
-        return Staged(submission, file, digest, None, str(e), info)
+        return Staged(submission, file, digest, None, str(e), info, language)
     numbered = dict(cells)
     last = max(numbered, default=0)
     nb = {"nbformat": 4, "nbformat_minor": 5, "metadata": {},
@@ -88,7 +96,7 @@ def stage(path: Path, folder: Path, into: Path, index: int, resolve=None) -> Sta
                     {"cell_type": "markdown", "metadata": {}, "source": ""} for k in range(1, last + 1)]}
     copy = into / f"{index:05d}.ipynb"
     copy.write_text(json.dumps(nb), encoding="utf-8")
-    return Staged(submission, file, digest, copy, variant=info)
+    return Staged(submission, file, digest, copy, variant=info, language=language)
 
 
 def stage_all(folder: Path, paths, resolve=None) -> tuple:

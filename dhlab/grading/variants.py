@@ -42,6 +42,7 @@ from ..course.family import FAMILY, family_names
 from ..course.family import spec as family_spec
 from ..course.family_model import AssignmentRobot, build
 from ..validation import DHLabError
+from .language import _
 
 __all__ = ["Variant", "variant", "table_digest", "student_variant", "roster_variants", "robot_of_variant", "fingerprint",
            "canonical_json", "sign", "verify", "Verification", "STATUSES", "SCHEME", "METADATA_KEY",
@@ -157,7 +158,7 @@ def variant(family: str, seed) -> Variant:
     always gives the same variant. It differs from the published robot in at least one length."""
     s = family_spec(family)
     draw = _Draw(f"{family}|{seed}")
-    for _ in range(200):
+    for _attempt in range(200):
         v = _draw_once(s, draw)
         if _sensible(v):
             return v
@@ -167,7 +168,7 @@ def variant(family: str, seed) -> Variant:
 def _draw_once(s, draw: _Draw) -> Variant:
     scale = draw.choice(SCALES)
     lengths = {}
-    for j, (kind, _, d, a, _) in enumerate(s.rows, start=1):
+    for j, (kind, _theta, d, a, _alpha) in enumerate(s.rows, start=1):
         for name, value in ((f"d{j}", d), (f"a{j}", a)):
             if value:
                 lengths[name] = _round_length(value * scale * (0.9 + 0.2 * draw.uniform()))
@@ -185,7 +186,7 @@ def _draw_once(s, draw: _Draw) -> Variant:
         turn = 0 if j == 0 else draw.choice(TURNS)
         value = s.home[j] + turn
         home.append(value if lo <= value <= hi else s.home[j])
-    senses = [-1 if draw.uniform() < 0.35 else 1 for _ in s.kinds]
+    senses = [-1 if draw.uniform() < 0.35 else 1 for _kind in s.kinds]
     mount = "ceiling" if draw.uniform() < 0.25 and "ceiling" in s.mounts else "floor"
     shoulder = -(lengths.get("floor", 0.0) + lengths.get("d1", 0.0))
     if mount == "floor":
@@ -199,7 +200,8 @@ def _draw_once(s, draw: _Draw) -> Variant:
 def _sensible(v: Variant) -> bool:
     """At home, every link on the robot's side of its plate; not the published robot."""
     s = family_spec(v.family)
-    published = {f"{n}{j}": val for j, (_, _, d, a, _) in enumerate(s.rows, 1) for n, val in (("d", d), ("a", a))}
+    published = {f"{n}{j}": val for j, (_kind, _theta, d, a, _alpha) in enumerate(s.rows, 1)
+                 for n, val in (("d", d), ("a", a))}
     published["floor"] = s.floor
     if all(published.get(k) == val for k, val in v.lengths if k != "stroke"):
         return False
@@ -257,7 +259,8 @@ def _read_variant(data) -> Variant:
                          f"{data['table']!r}, this dhlab has {table_digest(family)!r}): grade it with the dhlab "
                          "version that released it, or release again.")
     lengths = data["lengths"]
-    allowed = {f"{n}{j}" for j, (_, _, d, a, _) in enumerate(s.rows, 1) for n, val in (("d", d), ("a", a)) if val}
+    allowed = {f"{n}{j}" for j, (_kind, _theta, d, a, _alpha) in enumerate(s.rows, 1)
+               for n, val in (("d", d), ("a", a)) if val}
     allowed |= {"floor"} if s.floor else set()
     allowed |= {"stroke"} if "P" in s.kinds else set()
     if not isinstance(lengths, dict) or set(lengths) != allowed:
@@ -388,28 +391,28 @@ def verify(record, student_id: str, secret: bytes, roster_ids=()) -> Verificatio
       was changed, or it was signed with another secret.
     """
     if not isinstance(record, dict) or not record.get("variant") or not record.get("signature"):
-        return Verification("missing", "no signed variant in the notebook's metadata")
+        return Verification("missing", _("no signed variant in the notebook's metadata"))
     data, signature = record["variant"], record["signature"]
     if not isinstance(signature, str) or not isinstance(data, dict):
-        return Verification("tampered", "the variant record is malformed")
+        return Verification("tampered", _("the variant record is malformed"))
     try:
         mine = _mac(data, student_id, secret)
     except (TypeError, ValueError):
-        return Verification("tampered", "the variant cannot be read as JSON")
+        return Verification("tampered", _("the variant cannot be read as JSON"))
     if hmac.compare_digest(mine, signature):
         try:
-            return Verification("ok", "signed variant", Variant.from_dict(data), student_id)
+            return Verification("ok", _("signed variant"), Variant.from_dict(data), student_id)
         except DHLabError as exc:                         # signed by us, unreadable here: a newer format
-            return Verification("tampered", f"signed, but not readable by this dhlab: {exc}")
+            return Verification("tampered", _("signed, but not readable by this dhlab: {error}").format(error=exc))
     claimed = record.get("student_id")
     others = ([claimed] if isinstance(claimed, str) and claimed != student_id else []) + \
         [r for r in roster_ids if r != student_id and r != claimed]
     for other in others:
         if hmac.compare_digest(_mac(data, other, secret), signature):
-            return Verification("other_student", f"this is the variant signed for {other!r}, not for "
-                                f"{student_id!r}", None, other)
-    return Verification("tampered", "the signature does not match: the variant or the id was changed, "
-                        "or it was signed with another secret")
+            return Verification("other_student", _("this is the variant signed for {other!r}, not for {student!r}").format(
+                other=other, student=student_id), None, other)
+    return Verification("tampered", _("the signature does not match: the variant or the id was changed, "
+                                      "or it was signed with another secret"))
 
 
 def new_secret() -> bytes:

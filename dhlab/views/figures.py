@@ -40,6 +40,7 @@ from matplotlib.figure import Figure
 from matplotlib.text import Text
 from matplotlib.transforms import Bbox
 
+from ..i18n import _
 from ..validation import DHLabError
 
 __all__ = ["new_figure", "CourseFigure", "projector", "projector_scale", "figure_size",
@@ -68,14 +69,14 @@ def projector(on: bool = True, scale: float = 1.5, max_height_px: float | None =
     1.0
     """
     if not isinstance(on, (bool, int)) or isinstance(on, float):
-        raise DHLabError(f"projector(on) takes True or False, got {on!r}.")
+        raise DHLabError(_("projector(on) takes True or False, got {value}.").format(value=repr(on)))
     if on:
-        scale = _positive(scale, "scale", hint="e.g. projector(scale=1.5)")
+        scale = _positive(scale, "scale", hint=_("e.g. projector(scale=1.5)"))
         if not 0.5 <= scale <= 4:
-            raise DHLabError(f"projector scale must be between 0.5 and 4, got {scale:g}; "
-                             "1.5 suits most lecture halls.")
+            raise DHLabError(_("projector scale must be between 0.5 and 4, got {scale:g}; "
+                               "1.5 suits most lecture halls.").format(scale=scale))
         if max_height_px is not None:
-            max_height_px = _positive(max_height_px, "max_height_px", hint="pixels, e.g. 760")
+            max_height_px = _positive(max_height_px, "max_height_px", hint=_("pixels, e.g. 760"))
         _projector.update(scale=scale, max_height_px=max_height_px)
     else:
         _projector.update(scale=1.0, max_height_px=None)
@@ -94,11 +95,12 @@ def min_fontsize(dpi: float) -> float:
 
 def _positive(value, name, hint=""):
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise DHLabError(f"{name} must be a positive number, got {value!r}" + (f" ({hint})." if hint else "."))
+        raise DHLabError(_("{name} must be a positive number, got {value}").format(name=name, value=repr(value))
+                         + (f" ({hint})." if hint else "."))
     value = float(value)
     if not math.isfinite(value) or value <= 0:
-        raise DHLabError(f"{name} must be a positive, finite number, got {value!r}"
-                         + (f" ({hint})." if hint else "."))
+        raise DHLabError(_("{name} must be a positive, finite number, got {value}").format(
+            name=name, value=repr(value)) + (f" ({hint})." if hint else "."))
     return value
 
 
@@ -114,15 +116,17 @@ def figure_size(figsize=None, dpi=None) -> tuple:
     if figsize is None:
         figsize = matplotlib.rcParams["figure.figsize"]
     if isinstance(figsize, (str, bytes)) or not hasattr(figsize, "__len__") or len(figsize) != 2:
-        raise DHLabError(f"figsize must be (width, height) in inches, e.g. (6, 4), got {figsize!r}.")
-    width, height = (_positive(v, "figsize", hint="(width, height) in inches, e.g. (6, 4)")
+        raise DHLabError(_("figsize must be (width, height) in inches, e.g. (6, 4), got {value}.").format(
+            value=repr(figsize)))
+    width, height = (_positive(v, "figsize", hint=_("(width, height) in inches, e.g. (6, 4)"))
                      for v in figsize)
     if max(width, height) > 40:
-        raise DHLabError(f"figsize {figsize!r} is larger than 40 inches; give it in inches, e.g. (6, 4).")
+        raise DHLabError(_("figsize {value} is larger than 40 inches; give it in inches, e.g. (6, 4).").format(
+            value=repr(figsize)))
     if not 0.1 <= width / height <= 10:
-        raise DHLabError(f"figsize {figsize!r} is too thin to show anything: keep the width and the height "
-                         "within a factor 10 of each other, e.g. (6, 4).")
-    base = MIN_DPI if dpi is None else _positive(dpi, "dpi", hint="dots per inch, e.g. 100")
+        raise DHLabError(_("figsize {value} is too thin to show anything: keep the width and the height "
+                           "within a factor 10 of each other, e.g. (6, 4).").format(value=repr(figsize)))
+    base = MIN_DPI if dpi is None else _positive(dpi, "dpi", hint=_("dots per inch, e.g. 100"))
     base = max(base, MIN_DPI)
     if width * base < MIN_WIDTH_PX:                       # too narrow: scale up, keep the shape
         grow = MIN_WIDTH_PX / (width * base)
@@ -214,6 +218,8 @@ def new_figure(figsize=None, **kwargs) -> CourseFigure:
     try:
         figure = CourseFigure(figsize=(width, height), dpi=dpi, **kwargs)
     except (TypeError, ValueError) as exc:
-        raise DHLabError(f"new_figure: {exc} (options are those of matplotlib.figure.Figure).") from None
+        raise DHLabError(_("new_figure: {error} (options are those of matplotlib.figure.Figure).").format(
+            error=exc)) from None
+
     FigureCanvasAgg(figure)
     return figure

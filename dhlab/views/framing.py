@@ -15,7 +15,11 @@ wide on a projector (the PUMA used 11 % of its axes). Instead, the view is
 * while the robot moves, the frame is kept (**hysteresis**) until an origin
   comes near the border of the axes or the robot spans less than
   :data:`REFRAME_BELOW` of the axes; only then is it framed again, and only
-  then is the cached background redrawn.
+  then is the cached background redrawn;
+* the hysteresis **returns**: the view remembers the poses its frames were made
+  at, and when the robot comes back to one of them it is framed again, as it was
+  there. A joint swept to its limit (the view zooms out to follow it) and back
+  leaves the view as it was at the start, not zoomed out (:func:`needs_reframe`).
 
 >>> import numpy as np
 >>> lo, hi = frame_box(np.array([[0, 0, 0], [1, 0, 0]]), pad=0.1)
@@ -30,7 +34,8 @@ import matplotlib
 import numpy as np
 from mpl_toolkits.mplot3d import proj3d
 
-__all__ = ["frame_box", "projected", "extent_fraction", "fit_zoom", "needs_reframe", "zoom_in_on",
+__all__ = ["frame_box", "projected", "extent_fraction", "fit_zoom", "needs_reframe", "back_home", "axes_limits",
+           "zoom_in_on",
            "center_on", "box_corners", "PANE_MARGIN",
            "REFRAME_BELOW", "TARGET", "MIN_SIDE", "SLACK"]
 
@@ -40,6 +45,8 @@ SLACK = 0.04              # extra room on each side, as a fraction of the longes
 BOX_FILL = 0.98           # how much of the axes the zoomed 3D box fills
 TARGET = 0.62             # a fresh frame makes the robot span at least this much of its axes
 EDGE = 0.03               # re-frame when an origin comes this close to the axes' border
+HOME = 0.01               # back at a framed pose: every point within this fraction of the box's size
+HOMES_KEPT = 64           # how many framed poses a view remembers (a sweep makes ~15)
 # matplotlib before 3.9 (the browser edition's 3.8) draws the 3D box's panes 1/48 of each
 # range beyond the limits, on every side; from 3.9 on, exactly at the limits
 PANE_MARGIN = 1 / 48 if tuple(int(v) for v in matplotlib.__version__.split(".")[:2]) < (3, 9) else 0.0
@@ -100,14 +107,48 @@ def fit_zoom(ax, zoom: float = 1.0, fill: float = BOX_FILL) -> float:
 
 def needs_reframe(ax, points, M=None, below: float = REFRAME_BELOW, edge: float = EDGE) -> bool:
     """True when a point is drawn within ``edge`` (a fraction of the axes' size) of the
-    axes' border or beyond, or the points span less than ``below`` of the axes."""
+    axes' border or beyond, or the points span less than ``below`` of the axes, or the
+    points are back at a pose a frame was made at while the current frame was made
+    elsewhere (:func:`back_home`)."""
     pixels = projected(ax, points, M)
     box = ax.bbox
     mx, my = edge * box.width, edge * box.height
     near_edge = (np.any(pixels[:, 0] < box.x0 + mx) or np.any(pixels[:, 0] > box.x1 - mx)
                  or np.any(pixels[:, 1] < box.y0 + my) or np.any(pixels[:, 1] > box.y1 - my))
     span = pixels.max(axis=0) - pixels.min(axis=0)
-    return bool(near_edge) or max(span[0] / box.width, span[1] / box.height) < below
+    home = back_home(ax, points)           # always called: it also notes the frames made
+    return bool(near_edge) or max(span[0] / box.width, span[1] / box.height) < below or home
+
+
+def back_home(ax, points) -> bool:
+    """True when ``points`` are (within :data:`HOME` of the box's size) where they were
+    when one of the axes' earlier frames was made, and the current frame was made
+    elsewhere: framing again puts the view back as it was at that pose.
+
+    Called with the points of every update (by :func:`needs_reframe`), it notes the
+    frames made: when the axes' limits differ from those of the previous call, a new
+    frame was made, from the points of that call (or, the first time, from these).
+    What it remembers is kept on the axes (``ax._dhlab_homes``)."""
+    points = np.array(points, dtype=float)
+    limits = axes_limits(ax)
+    memory = ax.__dict__.setdefault("_dhlab_homes", {"homes": [], "limits": None, "last": None})
+    if memory["limits"] != limits:            # a frame was made since the last call
+        made_from = points if memory["last"] is None else memory["last"]
+        memory["homes"] = [made_from, *memory["homes"]][:HOMES_KEPT]    # the current frame's first
+        memory["limits"] = limits
+    memory["last"] = points
+    size = max(float(np.ptp(np.asarray(limits).reshape(-1, 2), axis=1).max()), 1e-12)
+
+    def near(home):
+        return home.shape == points.shape and float(np.abs(home - points).max()) <= HOME * size
+    current, *earlier = memory["homes"]
+    return not near(current) and any(near(home) for home in earlier)
+
+
+def axes_limits(ax) -> tuple:
+    """The axes' limits as one flat tuple: (x0, x1, y0, y1[, z0, z1])."""
+    limits = [ax.get_xlim(), ax.get_ylim()] + ([ax.get_zlim()] if getattr(ax, "name", "") == "3d" else [])
+    return tuple(float(v) for pair in limits for v in pair)
 
 
 def center_on(ax, points, lo, hi):

@@ -101,17 +101,21 @@ def place_boxes(anchors, sizes, bounds, obstacles=(), gap: float = _GAP) -> tupl
         if np.linalg.norm(away) < 1e-9:
             away = np.array([0.6, 0.8])           # alone: up and to the right, as in the seeds
         u = unit[np.argsort(-(unit @ away), kind="stable")]           # (D, 2), best first
-        # candidate centres: the box touches a circle of radius GAP + r around the anchor
-        reach = gap + radii[:, None] + 0.5 * (np.abs(u[:, 0]) * w + np.abs(u[:, 1]) * h)[None, :]
-        centres = a + u[None, :, :] * reach[:, :, None]              # (R, D, 2)
-        boxes = np.concatenate([centres - [w / 2, h / 2], centres + [w / 2, h / 2]], axis=-1)
-        boxes = boxes.reshape(-1, 4)
-        cost = _overlap_cost(boxes, placed) + _outside_cost(boxes, bounds) \
-            + _cover_cost(boxes, obstacles, a)
-        cost = cost + 1e-3 * np.repeat(np.arange(len(radii)), len(u))   # nearer is better
-        best = int(np.argmin(cost))
-        corners[k], distances[k] = boxes[best, :2], radii[best // len(u)]
-        placed = np.vstack([placed, boxes[best]])
+        half_extent = 0.5 * (np.abs(u[:, 0]) * w + np.abs(u[:, 1]) * h)
+        best_cost, best_box = np.inf, None
+        for ring, radius in enumerate(radii):
+            if best_cost <= 1e-3 * ring:      # costs are >= 0: no farther spot can do better
+                break
+            # candidate centres: the box touches a circle of radius GAP + r around the anchor
+            centres = a + u * (gap + radius + half_extent)[:, None]
+            boxes = np.concatenate([centres - [w / 2, h / 2], centres + [w / 2, h / 2]], axis=-1)
+            cost = _overlap_cost(boxes, placed) + _outside_cost(boxes, bounds) \
+                + _cover_cost(boxes, obstacles, a) + 1e-3 * ring           # nearer is better
+            j = int(np.argmin(cost))
+            if cost[j] < best_cost:
+                best_cost, best_box, distances[k] = cost[j], boxes[j], radius
+        corners[k] = best_box[:2]
+        placed = np.vstack([placed, best_box])
     return corners, distances
 
 
@@ -133,7 +137,10 @@ def _outside_cost(boxes, bounds):
 
 def _cover_cost(boxes, points, own):
     """A small cost for covering another origin's dot (not a hard rule)."""
-    points = points[np.linalg.norm(points - own, axis=1) > 1.0]
+    # only the points near some candidate can be covered: the same cost, far fewer comparisons
+    lo, hi = boxes[:, :2].min(axis=0) - 3, boxes[:, 2:].max(axis=0) + 3
+    near = (points > lo).all(axis=1) & (points < hi).all(axis=1)
+    points = points[near & (np.linalg.norm(points - own, axis=1) > 1.0)]
     if not len(points):
         return np.zeros(len(boxes))
     inside = ((points[None, :, 0] > boxes[:, None, 0] - 3) & (points[None, :, 0] < boxes[:, None, 2] + 3)

@@ -40,15 +40,20 @@ def keep_texts_inside(ax) -> None:
     """After every full draw of ``ax``'s figure: if a title, axis label or tick label
     of ``ax`` sticks out of the figure, move (or shrink) the axes and draw again.
     Full draws are rare in a panel (a new frame, a turn of the camera), so this
-    costs nothing while the sliders move."""
-    busy = []
+    costs nothing while the sliders move.
+
+    The place is always worked out from where the axes were put first (``home``),
+    not from where an earlier frame moved them: the layout is a function of what
+    is drawn, so a robot swept to a joint limit and back is drawn where it was at
+    the start (an axes moved for one frame goes back for the next if it can)."""
+    busy, home = [], ax.get_position().frozen()
 
     def on_draw(event):
         figure = ax.figure
         if busy or figure.canvas.is_saving():
             return
         for _ in range(3):
-            position = _overflow(ax, event.renderer)
+            position = _placement(ax, event.renderer, home)
             if position is None:
                 return
             ax.set_position(position)
@@ -59,6 +64,26 @@ def keep_texts_inside(ax) -> None:
                 busy.clear()
 
     ax.figure.canvas.mpl_connect("draw_event", on_draw)
+
+
+def _placement(ax, renderer, home):
+    """Where ``ax`` should be, given the texts it has just drawn, or None if it is there.
+
+    When the axes have their home size, they were only shifted: their texts, drawn
+    at home, would be where they are now less that shift, so the place is worked
+    out from home without drawing there. A shrunk axes is placed from where it is."""
+    fig, now = ax.figure.bbox, ax.get_position()
+    if np.allclose([now.width, now.height], [home.width, home.height], atol=1e-9):
+        shift = ((home.x0 - now.x0) * fig.width, (home.y0 - now.y0) * fig.height)
+        position = _overflow(ax, renderer, shift=shift, start=home)
+        position = list(home.bounds) if position is None else position
+    else:
+        position = _overflow(ax, renderer)
+    if position is None:
+        return None
+    if np.allclose(position, now.bounds, atol=0.25 / max(fig.width, fig.height)):   # within a pixel
+        return None
+    return position
 
 
 def drawn_texts(ax) -> list:
@@ -73,20 +98,22 @@ def drawn_texts(ax) -> list:
     return [t for t in texts if t.get_visible() and t.get_text()]
 
 
-def _overflow(ax, renderer, pad: float = 4.0):
+def _overflow(ax, renderer, pad: float = 4.0, shift=(0.0, 0.0), start=None):
     """A new position (figure fraction) for ``ax`` that brings the texts it drew
     inside the figure (shifted, or shrunk about its centre when they cannot fit),
-    or None when they are inside already."""
+    or None when they are inside already. ``shift`` (px) moves the drawn texts
+    first, as if the axes had been drawn at ``start`` (a position; default: where
+    the axes are)."""
     boxes = [t.get_window_extent(renderer) for t in drawn_texts(ax)]
     if not boxes:
         return None
     fig = ax.figure.bbox
-    lows = (min(b.x0 for b in boxes), min(b.y0 for b in boxes))
-    highs = (max(b.x1 for b in boxes), max(b.y1 for b in boxes))
+    lows = (min(b.x0 for b in boxes) + shift[0], min(b.y0 for b in boxes) + shift[1])
+    highs = (max(b.x1 for b in boxes) + shift[0], max(b.y1 for b in boxes) + shift[1])
     sizes = (fig.width, fig.height)
     if all(lo >= pad - 0.5 and hi <= size - pad + 0.5 for lo, hi, size in zip(lows, highs, sizes)):
         return None
-    p = ax.get_position()
+    p = ax.get_position() if start is None else start
     px = [p.x0 * fig.width, p.y0 * fig.height, p.width * fig.width, p.height * fig.height]
     for k, (lo, hi, size) in enumerate(zip(lows, highs, sizes)):
         if hi - lo > size - 2 * pad:             # cannot fit: shrink (the next pass shifts)

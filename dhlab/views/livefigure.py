@@ -7,11 +7,16 @@ panes, the grid, the ticks and their labels. A :class:`LiveFigure` draws those
 once, keeps the picture (the *background*) and, on each update, pastes the
 background back and paints only the moving artists on top ("blitting").
 
-It works with both Jupyter backends:
+It has three ways to reach the browser (``backend=``; ``DHLAB_BACKEND=canvas|ipympl|image`` in
+the environment overrides ``"auto"``):
 
 * ``%matplotlib widget`` (ipympl): the figure is an interactive canvas widget
   (you can rotate the 3D view with the mouse); each update sends only the
   changed pixels to the browser.
+* ``"canvas"`` (the default in a Jupyter kernel where anywidget imports): the browser
+  paints the moving artists over the cached background from numbers the kernel sends,
+  and shows matplotlib's own frame whenever the figure rests (:mod:`dhlab.views.canvas`);
+  a 3D view turns with the mouse in the browser.
 * the default inline backend: the figure is shown in an ``ipywidgets.Image``
   that receives a fresh PNG after each update. (No ``Output`` widget is used:
   executing notebooks whose sliders print into one can hang, see
@@ -33,6 +38,7 @@ from __future__ import annotations
 
 import base64
 import functools
+import os
 import struct
 import sys
 import weakref
@@ -46,7 +52,9 @@ from ..i18n import _
 from ..validation import DHLabError
 from .figures import new_figure
 
-__all__ = ["LiveFigure", "ipympl_active", "forget_previous_run", "encode_png"]
+__all__ = ["LiveFigure", "ipympl_active", "forget_previous_run", "encode_png", "BACKENDS", "choose_backend"]
+
+BACKENDS = ("auto", "canvas", "ipympl", "image")
 
 # ipympl loses a diff frame now and then, which leaves stale pixels until the
 # next full image (matplotlib#19116); sending a full frame every so often heals it.
@@ -65,19 +73,67 @@ def ipympl_active() -> bool:
     return backend in ("widget", "ipympl") or "ipympl" in backend
 
 
+def _in_kernel() -> bool:
+    """True in a Jupyter kernel (ipykernel, or the browser edition's Pyodide kernel), where a
+    front end can show widgets; False in a script, a test or a terminal IPython."""
+    try:
+        from IPython import get_ipython
+    except ImportError:
+        return False
+    shell = get_ipython()
+    if shell is None:
+        return False
+    return getattr(shell, "kernel", None) is not None or sys.platform == "emscripten"
+
+
+def _anywidget_imports() -> bool:
+    try:
+        import anywidget  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def choose_backend(backend: str = "auto") -> str:
+    """The backend a LiveFigure uses: ``backend`` itself unless it is ``"auto"``; then the
+    environment variable ``DHLAB_BACKEND`` if set, else ipympl under ``%matplotlib widget``,
+    else "image".
+
+    "canvas" (the browser draws the moving parts) is chosen only explicitly for now
+    (``backend="canvas"`` or ``DHLAB_BACKEND=canvas``): it is not yet measured on an idle
+    machine nor verified in the browser edition (issue 23)."""
+    if not isinstance(backend, str) or backend not in BACKENDS:
+        raise DHLabError(_("backend must be one of {names}, got {backend!r}.").format(
+            names=", ".join(map(repr, BACKENDS)), backend=backend))
+    if backend != "auto":
+        return backend
+    forced = os.environ.get("DHLAB_BACKEND", "").strip().lower()
+    if forced:
+        if forced not in BACKENDS[1:]:
+            raise DHLabError(_("the environment variable DHLAB_BACKEND must be 'canvas', 'ipympl' or 'image' "
+                               "(or unset), got {value!r}.").format(value=forced))
+        return forced
+    if ipympl_active():
+        return "ipympl"
+    return "image"
+
+
 class LiveFigure:
     """A figure with a cached background and a list of moving artists.
 
-    ``backend`` is ``"auto"`` (ipympl when ``%matplotlib widget`` is active,
-    else a PNG image), ``"ipympl"`` or ``"image"``.
+    ``backend`` is ``"auto"`` (see :func:`choose_backend`), ``"canvas"``, ``"ipympl"`` or
+    ``"image"``; ``live.backend`` says which one is used.
     """
 
     def __init__(self, figsize=(6, 6), dpi=100, backend: str = "auto"):
-        if not isinstance(backend, str) or backend not in ("auto", "ipympl", "image"):
-            raise DHLabError(_("backend must be 'auto', 'ipympl' or 'image', got {backend!r}.").format(backend=backend))
+        self.backend = choose_backend(backend)
         # at least 100 dpi and 450 px wide, text at least 12 px, the projector scale applied
         self.figure = new_figure(figsize, dpi=dpi, layout="none")
-        self.uses_ipympl = backend == "ipympl" or (backend == "auto" and ipympl_active())
+        self.uses_ipympl = self.backend == "ipympl"
+        self._base_dpi = self.figure.dpi      # the canvas backend renders at base dpi x pixel ratio
+        self._canvas = None          # the CanvasWidget of the canvas path, made on demand
+        self._agg_stale = False      # canvas path: the Agg buffer lags behind the moving artists
+        self._seq = 0                # canvas path: the number of the pose last sent
         if self.uses_ipympl:
             _attach_ipympl_canvas(self.figure)
         else:
@@ -110,7 +166,10 @@ class LiveFigure:
         if canvas.is_saving():        # savefig draws the moving artists too: not a background
             return
         self._background = canvas.copy_from_bbox(self.figure.bbox)
+        if self._canvas is not None:          # the browser gets the new background
+            self._canvas.background = self._encode()
         self._paint_moving()
+        self._agg_stale = False
 
     def _paint_moving(self):
         for artist in self._moving:
@@ -123,10 +182,14 @@ class LiveFigure:
         self._publish()
 
     def refresh(self):
-        """Show the moving artists where they are now: really draws the pixels."""
+        """Show the moving artists where they are now: draws the pixels (the image and ipympl
+        paths), or sends the artists to the browser (the canvas path: Agg draws them only when
+        a picture is asked for, by :meth:`png` or the browser's rest frame)."""
         canvas = self.figure.canvas
         if self._background is None:
             canvas.draw()             # the draw_event handler caches the background
+        elif self.backend == "canvas":
+            self._agg_stale = True    # the browser paints; Agg only when a PNG is asked for
         else:
             canvas.restore_region(self._background)
             self._paint_moving()
@@ -139,9 +202,12 @@ class LiveFigure:
     # --- showing -------------------------------------------------------------------
     @property
     def widget(self):
-        """The widget that shows the figure: ipympl's canvas, or an ``ipywidgets.Image``."""
+        """The widget that shows the figure: a :class:`~dhlab.views.canvas.CanvasWidget`,
+        ipympl's canvas, or an ``ipywidgets.Image``."""
         if self.uses_ipympl:
             return self.figure.canvas
+        if self.backend == "canvas":
+            return self._canvas_widget()
         if self._image is None:
             import ipywidgets as widgets
             width, height = self.figure.canvas.get_width_height()
@@ -154,12 +220,36 @@ class LiveFigure:
     def _publish(self):
         if self._image is not None:
             self._image.value = self.png()
+        if self._canvas is not None:
+            from .canvas import send_scene
+
+            self._seq += 1
+            send_scene(self)
 
     def png(self) -> bytes:
         """The pixels as they are now, as PNG bytes."""
+        self._current_agg()
+        return self._encode()
+
+    def _current_agg(self):
+        """Bring the Agg buffer up to date (the canvas path paints it only when asked)."""
         if self._background is None:
             self.figure.canvas.draw()
+        elif self._agg_stale:
+            self.figure.canvas.restore_region(self._background)
+            self._paint_moving()
+            self._agg_stale = False
+
+    def _encode(self) -> bytes:
         return encode_png(np.asarray(self.figure.canvas.buffer_rgba()), alpha=_PNG_WITH_ALPHA)
+
+    # --- the canvas path (see dhlab.views.canvas) -------------------------------------------
+    def _canvas_widget(self):
+        if self._canvas is None:
+            from .canvas import make_widget
+
+            self._canvas = make_widget(self)
+        return self._canvas
 
     def close(self):
         """Release the widget (its browser view goes away); the figure can be garbage-collected."""
@@ -167,6 +257,9 @@ class LiveFigure:
             self.figure.canvas.close()
         elif self._image is not None:
             self._image.close()
+        if self._canvas is not None:
+            self._canvas.close()
+            self._canvas = None
         self._background = None
 
 

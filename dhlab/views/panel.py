@@ -24,6 +24,7 @@ import numpy as np
 
 from ..i18n import _
 from ..validation import DHLabError
+from .keys import FIGURE_CLASS, slider_keys
 from .livefigure import LiveFigure, forget_previous_run
 from .view import one_pose
 
@@ -220,13 +221,16 @@ class Panel(widgets.HBox):
         # a wide figure, e.g. two subplots side by side)
         # beside the figure the controls have a fixed width, so the row wraps (or not) by the
         # column's width alone, never because a readout grew while a slider moves
-        side = widgets.VBox([*controls, self.error_box],
+        # an invisible widget that gives a focused slider its keys (not the notebook's shortcuts)
+        keys = slider_keys()
+        side = widgets.VBox([*controls, self.error_box, *([keys] if keys is not None else [])],
                             layout=widgets.Layout(margin="0.5em 0 0 0" if below else "0 0 0 1em",
                                                   width=None if below else control_width(SIDE_PX),
                                                   flex=None if below else "0 0 auto"))
         # the figure keeps its size: a flex row may otherwise shrink the canvas, which then shows
         # only part of the picture (its left side cut, as seen in a narrow browser column)
         live.widget.layout.flex = "0 0 auto"
+        live.widget.add_class(FIGURE_CLASS)      # its picture is not dragged away (keys.py)
         super().__init__([live.widget, side],
                          layout=widgets.Layout(flex_flow="column" if below else "row wrap",
                                                align_items="flex-start"))

@@ -54,6 +54,7 @@ FIGSIZE = (8.6, 3.3)
 CONTROLS_WIDTH_PX = 820
 MAX_SOLUTIONS = 4              # ghost robots made in advance (the artists never change in number)
 SOLUTION_NAMES = "ABCD"
+MESSAGE_HEIGHT = "6.4em"           # the report's box: its heading, two solutions and a note
 GHOST_COLORS = ("tab:purple", "tab:cyan", "tab:olive", "tab:pink")
 
 
@@ -122,7 +123,10 @@ class SpacesPanel(Panel):
         rows, self.sliders = joint_sliders(robot, q)
         # under the figure (two subplots side by side need the width): the joints and the
         # target in two columns, the inverse kinematics' report under both
-        self.message = widgets.HTML(layout=widgets.Layout(max_width=f"{CONTROLS_WIDTH_PX}px"))
+        # the inverse kinematics' report: its line count changes with the target (solutions, a
+        # note), so it gets a box of fixed size; the panel never grows or shrinks under the mouse
+        self.message = widgets.HTML(layout=widgets.Layout(
+            max_width=f"{CONTROLS_WIDTH_PX}px", height=None if ik is None else MESSAGE_HEIGHT, overflow="auto"))
         columns = [widgets.VBox([widgets.HTML(_("<b>Joints</b> (<i>articulaciones</i>)")), *rows],
                                 layout=widgets.Layout(margin="0 2em 0 0"))]
         self.target_sliders = []

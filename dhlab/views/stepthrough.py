@@ -134,7 +134,9 @@ class StepThroughPanel(Panel):
         self.slider = widgets.FloatSlider(value=step, min=0, max=4, step=0.05, description=_("step"),
                                           readout_format=".2f", continuous_update=True,
                                           layout=widgets.Layout(width="360px"))
-        self.text = widgets.HTML(layout=widgets.Layout(max_width="480px"))
+        # a box of fixed size: the text of each step differs, the panel must not (three lines hold
+        # the longest, in English and Spanish; a longer one would scroll, not push the panel)
+        self.text = widgets.HTML(layout=widgets.Layout(width="480px", height="4.8em", overflow="auto"))
         self.matrix = widgets.HTML()
         self.camera = widgets.ToggleButtons(options=["iso", "front", "side", "top"], value="iso",
                                             description=_("view"),

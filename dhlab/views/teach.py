@@ -51,19 +51,37 @@ def pose_text(T, unit: str = "") -> str:
             + row([f"roll = {roll:.2f}", f"pitch = {pitch:.2f}", f"yaw = {yaw:.2f}"]) + "</table>")
 
 
+MATRIX_CHARS = 8         # "-10.0000": a matrix cell's width; a robot in mm asks for more (TeachPanel)
+
+
 _CELL = "width:7.6em;padding:0 .6em 0 0;white-space:nowrap;font-variant-numeric:tabular-nums"
 
 
-def matrix_html(T, title: str = "<sup>0</sup>T<sub>n</sub>") -> str:
-    """A 4x4 matrix as a small HTML table, rotation and translation parts visible."""
+def matrix_html(T, title: str = "<sup>0</sup>T<sub>n</sub>", chars: int = MATRIX_CHARS) -> str:
+    """A 4x4 matrix as a small HTML table, rotation and translation parts visible.
+
+    Every cell is ``chars`` characters wide (monospace, fixed table layout): the table keeps its
+    size whatever the numbers, so the panel does not move while a slider does."""
     rows = []
     for i, row in enumerate(np.round(np.asarray(T, dtype=float), 4) + 0.0):   # no "-0.0000"
         cells = "".join(
-            f'<td style="padding:0 .5em;text-align:right;{"border-left:1px solid #999;" if j == 3 else ""}">'
+            f'<td style="width:{chars}ch;padding:0 .5em;text-align:right;white-space:nowrap;'
+            f'{"border-left:1px solid #999;" if j == 3 else ""}">'
             f"{v:.4f}</td>" for j, v in enumerate(row))
         rows.append(f'<tr style="{"border-top:1px solid #999;" if i == 3 else ""}">{cells}</tr>')
-    return (f'<div>{title} =</div><table style="font-family:monospace;border-collapse:collapse">'
-            f'{"".join(rows)}</table>')
+    # the title is one line whatever its length (a step-through's names the motions done so far)
+    return (f'<div style="white-space:nowrap">{title} =</div>'
+            f'<table style="font-family:monospace;border-collapse:collapse;'
+            f'table-layout:fixed">{"".join(rows)}</table>')
+
+
+def matrix_chars(robot) -> int:
+    """How many characters the widest number of ``robot``'s end-effector matrix takes
+    (its reach, negative, with 4 decimals; at least :data:`MATRIX_CHARS`)."""
+    reach = getattr(robot, "reach", None)
+    if not callable(reach):
+        return MATRIX_CHARS
+    return max(MATRIX_CHARS, len(f"{-float(reach()):.4f}"))
 
 
 class TeachPanel(Panel):
@@ -84,6 +102,7 @@ class TeachPanel(Panel):
         controls = as_flag(controls, "controls")
         q = default_q(robot) if q is None else checked_start(robot, q)
         rows, self.sliders = joint_sliders(robot, q)
+        self._chars = matrix_chars(self.robot)
         self.view = robot_view(robot, q, planar=planar, figsize=figsize, backend=backend,
                                **view_options)
         live = self.view.live
@@ -122,7 +141,7 @@ class TeachPanel(Panel):
         self.view.update(q, draw=False)
         T = self.view.frames[-1]          # the end effector: the view has just computed it
         self.readout.value = pose_text(T, getattr(self.robot, "unit", ""))
-        self.matrix.value = matrix_html(T, f"<sup>0</sup>T<sub>{self.robot.n}</sub>")
+        self.matrix.value = matrix_html(T, f"<sup>0</sup>T<sub>{self.robot.n}</sub>", self._chars)
         if self.on_change is not None:
             self.on_change(q)             # before the draw: a callback may move its own artists
         self.view.draw()                  # one draw per update

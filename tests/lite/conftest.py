@@ -27,7 +27,7 @@ import pytest
 
 HERE = Path(__file__).parent
 ROOT = HERE.parent.parent
-SITE = ROOT / "build" / "lite"
+SITE = Path(os.environ.get("DHLAB_LITE_SITE", ROOT / "build" / "lite"))   # another build: DHLAB_LITE_SITE
 MEASUREMENTS = ROOT / "build" / "lite-measurements.json"
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
                  "--disable-component-update", "--disable-sync", "--no-first-run",
