@@ -83,6 +83,21 @@ def with_backend(source: Path, target: Path, backend: str | None) -> Path:
 NOTEBOOK_JS = "(window.__dhlabNotebook || window.jupyterapp.shell.currentWidget)"
 
 
+def ssrms_panel_notebook(folder: Path, backend: str, prefix: str) -> Path:
+    """A one-cell notebook ``<folder>/<prefix>_<backend>.ipynb`` showing the SSRMS teach panel
+    with ``backend`` (the keys and screen-rate tests open it)."""
+    code = f"import dhlab\npanel = dhlab.teach(dhlab.robots.ssrms(), backend={backend!r})\npanel"
+    notebook = {"cells": [{"cell_type": "code", "execution_count": None, "id": "panel", "metadata": {},
+                           "outputs": [], "source": code}],
+                "metadata": {"kernelspec": {"display_name": "Python 3 (ipykernel)", "language": "python",
+                                            "name": "python3"}},
+                "nbformat": 4, "nbformat_minor": 5}
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / f"{prefix}_{backend}.ipynb"
+    path.write_text(json.dumps(notebook), encoding="utf-8")
+    return path
+
+
 def open_lab(browser, server, width: int = WIDTH, height: int = HEIGHT):
     """A new page with JupyterLab (a fresh, empty workspace), once the app is ready.
     One page serves many notebooks: loading JupyterLab takes seconds."""

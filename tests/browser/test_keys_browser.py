@@ -11,12 +11,11 @@ gets the key. The inline backend's ``<img>`` is not draggable.
 """
 from __future__ import annotations
 
-import json
 import time
-from pathlib import Path
 
 import pytest
 
+import labdriver
 from labdriver import TIMEOUT_MS, close_notebook, open_notebook, run_all
 
 FIGURE = ".widget-image, .jupyter-matplotlib-canvas-container canvas"
@@ -37,17 +36,6 @@ GREEDY_BINDING = """() => {
 }"""
 
 
-def panel_notebook(folder: Path, backend: str) -> Path:
-    code = f"import dhlab\npanel = dhlab.teach(dhlab.robots.ssrms(), backend={backend!r})\npanel"
-    notebook = {"cells": [{"cell_type": "code", "execution_count": None, "id": "panel", "metadata": {},
-                           "outputs": [], "source": code}],
-                "metadata": {"kernelspec": {"display_name": "Python 3 (ipykernel)", "language": "python",
-                                            "name": "python3"}},
-                "nbformat": 4, "nbformat_minor": 5}
-    folder.mkdir(parents=True, exist_ok=True)
-    path = folder / f"keys_{backend}.ipynb"
-    path.write_text(json.dumps(notebook), encoding="utf-8")
-    return path
 
 
 def value(handle) -> float:
@@ -57,7 +45,7 @@ def value(handle) -> float:
 @pytest.mark.parametrize("backend", ["image", "ipympl"])
 def test_a_clicked_slider_takes_its_keys_even_where_a_shortcut_wants_them(lab_page, lab_root, backend):
     page = lab_page
-    path = panel_notebook(lab_root / "keys", backend)
+    path = labdriver.ssrms_panel_notebook(lab_root / "keys", backend, "keys")
     try:
         open_notebook(page, f"keys/{path.name}")
         run_all(page)

@@ -36,6 +36,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import labdriver
 from labdriver import NOTEBOOK_JS, TIMEOUT_MS, close_notebook, open_notebook, run_all, settled
 from screenrate import frames_during, install, key_presses, mouse_drag, stats
 
@@ -65,20 +66,6 @@ def skip_unless_available(backend: str) -> None:
         pytest.skip(f"the canvas backend is not available yet: {type(exc).__name__}: {exc}")
 
 
-def panel_notebook(folder: Path, backend: str) -> Path:
-    """A notebook with the SSRMS teach panel on ``backend`` (and nothing else to run)."""
-    code = ("import dhlab\n"
-            f"panel = dhlab.teach(dhlab.robots.ssrms(), backend={backend!r})\n"
-            "panel")
-    notebook = {"cells": [{"cell_type": "code", "execution_count": None, "id": "panel", "metadata": {},
-                           "outputs": [], "source": code}],
-                "metadata": {"kernelspec": {"display_name": "Python 3 (ipykernel)", "language": "python",
-                                            "name": "python3"}},
-                "nbformat": 4, "nbformat_minor": 5}
-    folder.mkdir(parents=True, exist_ok=True)
-    path = folder / f"rate_{backend}.ipynb"
-    path.write_text(json.dumps(notebook), encoding="utf-8")
-    return path
 
 
 def open_page(browser, server, width: int, ratio: float):
@@ -109,7 +96,7 @@ def kernel(page, code: str) -> str:
 
 
 def opened_panel(page, lab_root, backend):
-    path = panel_notebook(lab_root / "rate", backend)
+    path = labdriver.ssrms_panel_notebook(lab_root / "rate", backend, "rate")
     open_notebook(page, f"rate/{path.name}")
     run_all(page)
     output = page.locator(".jp-OutputArea-output", has=page.locator(".widget-slider")).first
