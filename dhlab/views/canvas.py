@@ -1,0 +1,165 @@
+"""The "canvas" backend of a LiveFigure: the browser paints what moves, matplotlib the rest.
+
+Why: with the PNG backends every slider step costs a full Agg render and a PNG in the kernel
+(~17 ms for the SSRMS teach panel) and a PNG decode in the browser, so a drag shows 12-20
+frames a second. Here (an anywidget, its ES module ``canvas.js``):
+
+* matplotlib renders the figure **without** the moving artists once (the *background*, the
+  picture :class:`~dhlab.views.livefigure.LiveFigure` already keeps for blitting), and again
+  only when it changes (reframing, camera, zoom, labels toggled, the screen's pixel ratio);
+* each refresh sends the moving artists as numbers (:mod:`dhlab.views.scene`) in one custom
+  message with a float32 buffer (not a trait: no echo, nothing kept); the browser projects them
+  with the axes' own matrices and paints them over the background;
+* when no pose has arrived for 150 ms, the browser asks for the **rest frame**: matplotlib
+  draws the whole figure with Agg and sends it as a PNG, shown instead of the overlay. At rest
+  the picture is exactly matplotlib's;
+* dragging a 3D axes turns it in the browser; on release the final (elev, azim) comes back
+  here, the axes take that view and matplotlib redraws.
+
+An artist the browser cannot paint (see :class:`~dhlab.views.scene.Unsupported`) makes that
+figure send a full matplotlib frame at every step instead (the old cost, never a wrong
+picture). Without a browser (nbval, scripts) nothing waits for one: the messages go nowhere.
+"""
+from __future__ import annotations
+
+import math
+import weakref
+from pathlib import Path
+
+import anywidget
+import traitlets
+
+from .scene import Unsupported, css_color, describe_scene
+
+__all__ = ["CanvasWidget", "make_widget", "send_scene", "send_rest", "turned", "set_pixel_ratio",
+           "MIN_RATIO", "MAX_RATIO"]
+
+MIN_RATIO, MAX_RATIO = 1.0, 3.0        # pixel ratios rendered (a 4K laptop reports 2 to 2.5)
+
+
+class CanvasWidget(anywidget.AnyWidget):
+    """The browser view of a LiveFigure with the canvas backend.
+
+    Traits: ``background`` (PNG without the moving artists), ``frame`` and ``frame_seq`` (the
+    last full matplotlib frame and the pose it shows), ``css_size`` (width, height in CSS
+    pixels), ``pixel_ratio`` (set by the browser: the figure is rendered at that many device
+    pixels per CSS pixel, so that it is sharp on a HiDPI screen).
+    """
+
+    _esm = Path(__file__).with_name("canvas.js")
+    background = traitlets.Bytes(b"").tag(sync=True)
+    frame = traitlets.Bytes(b"").tag(sync=True)
+    frame_seq = traitlets.Int(-1).tag(sync=True)
+    css_size = traitlets.List([0, 0]).tag(sync=True)
+    pixel_ratio = traitlets.Float(1.0).tag(sync=True)
+
+    def __init__(self, live, **kwargs):
+        super().__init__(**kwargs)
+        self._live = weakref.ref(live)          # the figure must not live on because of its widget
+        self.on_msg(self._on_browser_message)
+        self.observe(self._on_ratio, names="pixel_ratio")
+
+    # --- what the browser says -------------------------------------------------------------
+    def _on_browser_message(self, _widget, content, _buffers):
+        live = self._live()
+        if live is None or not isinstance(content, dict):
+            return
+        kind = content.get("kind")
+        if kind == "ready":
+            send_scene(live)
+        elif kind == "rest" and _whole(content.get("seq")):
+            send_rest(live, content["seq"])
+        elif kind == "view":
+            axes, elev, azim = content.get("axes"), content.get("elev"), content.get("azim")
+            if _whole(axes) and 0 <= axes < len(live.figure.axes) and _finite(elev) and _finite(azim):
+                turned(live, live.figure.axes[axes], float(elev), float(azim))
+        # anything else (a newer or older front end): ignored, the picture stays right
+
+    def _on_ratio(self, change):
+        live = self._live()
+        ratio = change["new"]
+        if live is not None and _finite(ratio):
+            set_pixel_ratio(live, min(max(float(ratio), MIN_RATIO), MAX_RATIO))
+
+    # --- what the kernel sends ----------------------------------------------------------------
+    def send_scene(self, content: dict, numbers) -> None:
+        """The moving artists (see :func:`dhlab.views.scene.describe_scene`)."""
+        self.send(dict(content, kind="scene"), buffers=[memoryview(numbers.tobytes())])
+
+    def show_frame(self, png: bytes, seq: int) -> None:
+        """A full matplotlib frame: the browser shows it if no newer pose has arrived."""
+        with self.hold_sync():
+            self.frame, self.frame_seq = png, seq
+
+
+# --- what a LiveFigure does on the canvas path ----------------------------------------------
+def make_widget(live) -> CanvasWidget:
+    """The widget of ``live``, holding its background and its current frame."""
+    widget = CanvasWidget(live, css_size=css_size(live))
+    live._canvas = widget
+    if live._background is None:
+        live.figure.canvas.draw()          # the draw_event handler sends the background
+    else:
+        widget.background = _background_png(live)
+    live._current_agg()
+    widget.show_frame(live._encode(), live._seq)
+    return widget
+
+
+def css_size(live) -> list:
+    """The figure's size in CSS pixels (its pixels at the base dpi)."""
+    ratio = live.figure.dpi / live._base_dpi
+    return [round(v / ratio) for v in live.figure.canvas.get_width_height()]
+
+
+def _background_png(live) -> bytes:
+    live.figure.canvas.restore_region(live._background)
+    png = live._encode()
+    live._agg_stale = True
+    return png
+
+
+def send_scene(live) -> None:
+    """The moving artists to the browser; a full frame if one of them cannot be sent."""
+    try:
+        content, numbers = describe_scene(live.figure, live.moving)
+    except Unsupported:
+        live._current_agg()
+        live._canvas.show_frame(live._encode(), live._seq)
+        return
+    content["seq"] = live._seq
+    content["face"] = css_color(live.figure.get_facecolor())
+    live._canvas.send_scene(content, numbers)
+
+
+def send_rest(live, seq: int) -> None:
+    """The browser rests on pose ``seq``: matplotlib's frame of it (if still the current one)."""
+    if seq == live._seq and live._canvas is not None:
+        live._current_agg()
+        live._canvas.show_frame(live._encode(), seq)
+
+
+def turned(live, ax, elev: float, azim: float) -> None:
+    """The browser turned ``ax`` to (elev, azim): the axes take that view and matplotlib draws it."""
+    ax.view_init(elev=elev, azim=azim, roll=getattr(ax, "roll", 0.0))
+    live.redraw()
+
+
+def set_pixel_ratio(live, ratio: float) -> None:
+    """Render at ``ratio`` device pixels per CSS pixel (sharp on a HiDPI screen)."""
+    if abs(live.figure.dpi - live._base_dpi * ratio) < 1e-9:
+        return
+    live.figure.set_dpi(live._base_dpi * ratio)
+    live._background = None
+    live.figure.canvas.draw()
+    if live._canvas is not None:
+        live._canvas.css_size = css_size(live)
+    live._publish()
+
+
+def _whole(value) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+def _finite(value) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
