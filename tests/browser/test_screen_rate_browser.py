@@ -49,8 +49,8 @@ SLIDER = 1                                  # joint 2 (the shoulder): the whole 
 COLUMNS = [968, 1400]                       # notebook column widths, px
 THRESHOLDS = os.environ.get("DHLAB_RATE_THRESHOLDS", "") not in ("", "0")
 TARGET = {"key_median_ms": 33, "key_p90_ms": 50, "drag_fps": 30, "rotation_fps": 30}
-FIGURE = (".jupyter-matplotlib-canvas-container canvas, .widget-image, "
-          ".jp-OutputArea-output canvas")
+# searched inside an output area: the canvas backend's <canvas> carries its own class
+FIGURE = (".jupyter-matplotlib-canvas-container canvas, .widget-image, canvas.dhlab-canvas")
 _results: dict = {}
 
 
