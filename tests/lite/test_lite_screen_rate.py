@@ -28,7 +28,7 @@ from screenrate import frames_during, install, key_presses, mouse_drag, stats  #
 
 SSRMS = "07_ssrms.ipynb"
 SLIDER = ".widget-slider"
-FIGURE = ".widget-image, .jupyter-matplotlib-canvas-container canvas, .jp-OutputArea-output canvas"
+FIGURE = ".widget-image, .jupyter-matplotlib-canvas-container canvas, canvas.dhlab-canvas"   # searched inside an output
 PRESSES = 30
 THRESHOLDS = os.environ.get("DHLAB_RATE_THRESHOLDS", "") not in ("", "0")
 
