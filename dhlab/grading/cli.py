@@ -163,19 +163,8 @@ def grade(argv) -> int:
     """``dhlab-grade puma SUBMISSIONS -o gradebook.csv …`` (see the module), in the teacher's language
     (``--language``, else ``DHLAB_LANGUAGE``, else English): its help, messages, statuses and summary;
     each feedback file is in its student's language (:mod:`dhlab.grading.rows`)."""
-    from ..i18n import set_language
-    from ..validation import DHLabError
-    from .language import language_option
-    try:
-        teacher = language_option(argv)
-    except DHLabError as exc:
-        print(f"dhlab-grade: error: {exc}", file=sys.stderr)
-        return 2
-    previous = set_language(teacher)
-    try:
-        return _grade(argv)
-    finally:
-        set_language(previous)
+    from .language import as_teacher
+    return as_teacher("dhlab-grade", argv, _grade)
 
 
 def _grade(argv) -> int:

@@ -17,7 +17,7 @@ import tempfile
 from pathlib import Path
 
 from ..validation import DHLabError
-from .language import _, split_language
+from .language import _, as_teacher
 
 __all__ = ["main"]
 
@@ -109,18 +109,8 @@ def _try(args) -> int:
 
 def main(argv=None) -> int:
     """``dhlab-grade export …`` in the teacher's language (``--language``, else ``DHLAB_LANGUAGE``)."""
-    from ..i18n import set_language
     argv = sys.argv[1:] if argv is None else list(argv)
-    try:
-        language, argv = split_language(argv)
-    except DHLabError as exc:
-        print(f"dhlab-grade export: error: {exc}", file=sys.stderr)
-        return 2
-    previous = set_language(language)
-    try:
-        return _main(argv)
-    finally:
-        set_language(previous)
+    return as_teacher("dhlab-grade export", argv, _main, strip=True)
 
 
 def _main(argv) -> int:

@@ -18,12 +18,14 @@ from __future__ import annotations
 
 import contextlib
 import os
+import sys
 import threading
 
-from ..i18n import ENV_VAR, LANGUAGES, _catalog, _checked, get_language
+from ..i18n import ENV_VAR, LANGUAGES, _catalog, _checked, get_language, set_language
+from ..validation import DHLabError
 
 __all__ = ["_", "N_", "speaking", "current_language", "case_word", "checked_language", "default_language",
-           "language_option", "split_language"]
+           "language_option", "split_language", "as_teacher"]
 
 _local = threading.local()
 
@@ -116,3 +118,22 @@ def split_language(argv) -> tuple:
         elif not arg.startswith("--language="):
             rest.append(arg)
     return language_option(argv), rest
+
+
+def as_teacher(prog: str, argv, run, strip: bool = False) -> int:
+    """``run(argv)`` with every message in the teacher's language (:func:`language_option`); with
+    ``strip`` the ``--language`` option is taken out of ``argv`` first (:func:`split_language`).
+    A bad language is reported as ``prog: error: …``, exit status 2, as argparse does."""
+    try:
+        if strip:
+            language, argv = split_language(argv)
+        else:
+            language = language_option(argv)
+    except DHLabError as exc:
+        print(f"{prog}: error: {exc}", file=sys.stderr)
+        return 2
+    previous = set_language(language)
+    try:
+        return run(argv)
+    finally:
+        set_language(previous)

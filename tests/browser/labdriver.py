@@ -98,10 +98,10 @@ def ssrms_panel_notebook(folder: Path, backend: str, prefix: str) -> Path:
     return path
 
 
-def open_lab(browser, server, width: int = WIDTH, height: int = HEIGHT):
-    """A new page with JupyterLab (a fresh, empty workspace), once the app is ready.
-    One page serves many notebooks: loading JupyterLab takes seconds."""
-    page = browser.new_page(viewport={"width": width, "height": height})
+def open_lab(browser, server, width: int = WIDTH, height: int = HEIGHT, ratio: float = 1):
+    """A new page with JupyterLab (a fresh, empty workspace), once the app is ready, at device
+    pixel ratio ``ratio``. One page serves many notebooks: loading JupyterLab takes seconds."""
+    page = browser.new_page(viewport={"width": width, "height": height}, device_scale_factor=ratio)
     page.goto(f"{server.url}/lab/workspaces/tier{os.urandom(4).hex()}?reset&token={server.token}",
               timeout=TIMEOUT_MS)
     page.wait_for_function("() => window.jupyterapp !== undefined", timeout=TIMEOUT_MS)

@@ -37,7 +37,7 @@ import numpy as np
 import pytest
 
 import labdriver
-from labdriver import NOTEBOOK_JS, TIMEOUT_MS, close_notebook, open_notebook, run_all, settled
+from labdriver import NOTEBOOK_JS, close_notebook, open_notebook, run_all, settled
 from screenrate import frames_during, install, key_presses, mouse_drag, stats
 
 HERE = Path(__file__).parent
@@ -66,16 +66,6 @@ def skip_unless_available(backend: str) -> None:
         pytest.skip(f"the canvas backend is not available yet: {type(exc).__name__}: {exc}")
 
 
-
-
-def open_page(browser, server, width: int, ratio: float):
-    """JupyterLab in a fresh workspace, at device pixel ratio ``ratio`` (file browser open)."""
-    page = browser.new_page(viewport={"width": width, "height": 1000}, device_scale_factor=ratio)
-    page.goto(f"{server.url}/lab/workspaces/rate{os.urandom(4).hex()}?reset&token={server.token}",
-              timeout=TIMEOUT_MS)
-    page.wait_for_function("() => window.jupyterapp !== undefined", timeout=TIMEOUT_MS)
-    page.evaluate("() => window.jupyterapp.restored")
-    return page
 
 
 def set_column(page, column: int) -> None:
@@ -125,7 +115,7 @@ def record(key: str, result: dict, results_dir: Path) -> None:
 @pytest.mark.parametrize("backend", BACKENDS)
 def test_screen_rate(browser, lab_server, lab_root, results_dir, backend, ratio):
     skip_unless_available(backend)
-    page = open_page(browser, lab_server, 1400, ratio)
+    page = labdriver.open_lab(browser, lab_server, 1400, 1000, ratio)   # file browser open
     try:
         output, figure = opened_panel(page, lab_root, backend)
         install(page)
@@ -178,7 +168,7 @@ def test_screen_rate(browser, lab_server, lab_root, results_dir, backend, ratio)
 def test_panel_holds_still_while_a_slider_sweeps(browser, lab_server, lab_root, results_dir, backend, column):
     """The panel's box is the same (±1 px) at every value of joint 2 across its range."""
     skip_unless_available(backend)
-    page = open_page(browser, lab_server, column + 400, 1)
+    page = labdriver.open_lab(browser, lab_server, column + 400, 1000)
     try:
         output, figure = opened_panel(page, lab_root, backend)
         set_column(page, column)
