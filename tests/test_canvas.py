@@ -12,6 +12,7 @@ from PIL import Image
 
 import dhlab
 from dhlab.validation import DHLabError
+from dhlab.views import livefigure
 from dhlab.views.livefigure import LiveFigure, choose_backend
 from dhlab.views.scene import Unsupported, describe_scene
 
@@ -154,7 +155,11 @@ def test_a_hidpi_screen_gets_a_sharper_picture_of_the_same_size():
 
 def test_backend_names_and_the_environment_override(monkeypatch):
     monkeypatch.delenv("DHLAB_BACKEND", raising=False)
-    assert choose_backend("auto") == "image"           # no kernel here
+    # another test in this process may have switched matplotlib to ipympl: decide both ways
+    monkeypatch.setattr(livefigure, "ipympl_active", lambda: False)
+    assert choose_backend("auto") == "image"
+    monkeypatch.setattr(livefigure, "ipympl_active", lambda: True)
+    assert choose_backend("auto") == "ipympl"          # under %matplotlib widget
     assert choose_backend("canvas") == "canvas"
     monkeypatch.setenv("DHLAB_BACKEND", "canvas")
     assert choose_backend("auto") == "canvas"
