@@ -157,7 +157,11 @@ def test_backend_names_and_the_environment_override(monkeypatch):
     monkeypatch.delenv("DHLAB_BACKEND", raising=False)
     # another test in this process may have switched matplotlib to ipympl: decide both ways
     monkeypatch.setattr(livefigure, "ipympl_active", lambda: False)
-    assert choose_backend("auto") == "image"
+    assert choose_backend("auto") == "image"           # no kernel here: nothing shows a widget
+    monkeypatch.setattr(livefigure, "_in_kernel", lambda: True)
+    assert choose_backend("auto") == "canvas"          # in a kernel: the browser paints
+    monkeypatch.setattr(livefigure, "_anywidget_imports", lambda: False)
+    assert choose_backend("auto") == "image"           # ... if anywidget is there
     monkeypatch.setattr(livefigure, "ipympl_active", lambda: True)
     assert choose_backend("auto") == "ipympl"          # under %matplotlib widget
     assert choose_backend("canvas") == "canvas"

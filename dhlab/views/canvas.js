@@ -10,6 +10,8 @@
 // The maths (viewMatrix, compose, project, depthOrder, dragView) uses no DOM, so node can
 // import this file and tests/test_canvas_js.py checks it against matplotlib.
 
+import { rigged, sameQ, slidersQ } from "./rig.js";
+
 const REST_MS = 150;          // no new pose for this long: ask for the exact frame
 const BOX_COLOR = "rgba(120,120,120,0.55)";
 
@@ -288,7 +290,11 @@ function render({ model, el }) {
   // for the browser tests (tests/browser): when the last pose arrived, how long a paint took
   const trace = (globalThis.__dhlabCanvas = globalThis.__dhlabCanvas || { scenes: 0 });
   const state = { background: null, frame: null, frameSeq: -1, scene: null, data: null, seq: -1,
-                  turning: null, timer: null, pending: false };
+                  turning: null, timer: null, pending: false,
+                  rig: null, rigData: null, sliders: [], qNow: null, movedAt: 0 };
+
+  // the pose the browser shows ahead of the kernel (a slider moved, its scene not here yet)
+  const ahead = () => state.rig && state.scene && state.qNow && !sameQ(state.qNow, state.scene.q);
 
   function fitSize(width, height) {
     const [cssW, cssH] = model.get("css_size");
@@ -300,12 +306,15 @@ function render({ model, el }) {
   function paint() {
     state.pending = false;
     const started = performance.now();
-    const image = state.turning || state.frameSeq < state.seq ? state.background : state.frame;
+    const predicted = ahead();
+    const image = state.turning || predicted || state.frameSeq < state.seq ? state.background : state.frame;
     if (image) fitSize(image.width, image.height);
     ctx.setTransform(1, 0, 0, 1, 0, 0);
     ctx.clearRect(0, 0, canvas.width, canvas.height);
     if (image) ctx.drawImage(image, 0, 0);
     if (image === state.frame || !state.scene) return;
+    const data = predicted ? rigged(state.rig, state.rigData, state.scene.items, state.data, state.qNow)
+      : state.data;
     const P = {};
     if (state.turning) {
       const t = state.turning, cam = state.scene.spaces[t.space];
@@ -315,9 +324,10 @@ function render({ model, el }) {
       ctx.fillRect(x0, y0, x1 - x0, y1 - y0);
       paintBox(ctx, cam, P[t.space]);
     }
-    paintItems(ctx, state.scene, state.data, P);
+    paintItems(ctx, state.scene, data, P);
     trace.paintMs = performance.now() - started;
     trace.paints = (trace.paints || 0) + 1;
+    if (predicted) trace.predicted = (trace.predicted || 0) + 1;
   }
 
   function schedule() {
@@ -330,6 +340,7 @@ function render({ model, el }) {
   }
 
   model.on("msg:custom", (msg, buffers) => {
+    if (msg.kind === "rig") { linkSliders(msg, floats(buffers[0])); return; }
     if (msg.kind !== "scene") return;
     trace.sceneAt = performance.now();
     trace.scenes += 1;
@@ -342,6 +353,8 @@ function render({ model, el }) {
       const cam = msg.spaces[t.space];
       if (cam && cam.elev === t.elev && cam.azim === t.azim) state.turning = null;
     }
+    if (ahead() && performance.now() - state.movedAt > 2000) state.qNow = null;   // the kernel's pose wins
+    if (ahead()) { if (!state.turning) schedule(); return; }   // the kernel is behind: no rest frame yet
     if (!state.turning || state.turning.done) askForRest();
     if (!state.turning) schedule();
   });
@@ -362,6 +375,36 @@ function render({ model, el }) {
     state.frameSeq = seq;
     state.seq = Math.max(state.seq, seq);
     if (!state.turning) schedule();
+  }
+
+  // the sliders of the rig: their values move the picture here, before the kernel hears of them
+  function onSlider() {
+    state.qNow = slidersQ(state.sliders.map((m) => m.get("value")), state.rig.scales);
+    state.movedAt = performance.now();
+    trace.movedAt = state.movedAt;
+    clearTimeout(state.timer);                // no rest frame while the browser is ahead
+    schedule();
+  }
+
+  async function linkSliders(rig, rigData) {
+    unlinkSliders();
+    let sliders;
+    try {
+      sliders = await Promise.all(rig.sliders.map((id) => model.widget_manager.get_model(id)));
+    } catch (error) {
+      return;                                 // no widget manager access: the kernel draws every pose
+    }
+    state.rig = rig;
+    state.rigData = rigData;
+    state.sliders = sliders;
+    for (const slider of sliders) slider.on("change:value", onSlider);
+  }
+
+  function unlinkSliders() {
+    for (const slider of state.sliders) slider.off("change:value", onSlider);
+    state.sliders = [];
+    state.rig = null;
+    state.qNow = null;
   }
 
   // turning a 3D view with the mouse
@@ -412,7 +455,7 @@ function render({ model, el }) {
   onBackground();
   onFrame();
   model.send({ kind: "ready" });      // the kernel answers with the current scene
-  return () => clearTimeout(state.timer);
+  return () => { clearTimeout(state.timer); unlinkSliders(); };
 }
 
 export default { render };

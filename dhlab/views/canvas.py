@@ -31,10 +31,23 @@ import traitlets
 
 from .scene import Unsupported, css_color, describe_scene
 
-__all__ = ["CanvasWidget", "make_widget", "send_scene", "send_rest", "turned", "set_pixel_ratio",
+__all__ = ["CanvasWidget", "make_widget", "send_scene", "send_rig", "send_rest", "turned", "set_pixel_ratio",
            "MIN_RATIO", "MAX_RATIO"]
 
 MIN_RATIO, MAX_RATIO = 1.0, 3.0        # pixel ratios rendered (a 4K laptop reports 2 to 2.5)
+
+
+def _bundle(*names) -> str:
+    """One ES module from several files of this folder (anywidget loads one module): each file's
+    imports of the others (``import ... from "./x.js"``) are dropped, their code comes first."""
+    here = Path(__file__).parent
+    parts = []
+    for name in names:
+        text = (here / name).read_text(encoding="utf-8")
+        parts.append("\n".join(line for line in text.splitlines()
+                               if not (line.startswith("import ") and '"./' in line)))
+    return "\n".join(parts)
+
 
 
 class CanvasWidget(anywidget.AnyWidget):
@@ -46,7 +59,7 @@ class CanvasWidget(anywidget.AnyWidget):
     pixels per CSS pixel, so that it is sharp on a HiDPI screen).
     """
 
-    _esm = Path(__file__).with_name("canvas.js")
+    _esm = _bundle("rig.js", "canvas.js")
     background = traitlets.Bytes(b"").tag(sync=True)
     frame = traitlets.Bytes(b"").tag(sync=True)
     frame_seq = traitlets.Int(-1).tag(sync=True)
@@ -56,6 +69,7 @@ class CanvasWidget(anywidget.AnyWidget):
     def __init__(self, live, **kwargs):
         super().__init__(**kwargs)
         self._live = weakref.ref(live)          # the figure must not live on because of its widget
+        self.shown = False                      # a browser shows it (it said "ready")
         self.on_msg(self._on_browser_message)
         self.observe(self._on_ratio, names="pixel_ratio")
 
@@ -66,6 +80,8 @@ class CanvasWidget(anywidget.AnyWidget):
             return
         kind = content.get("kind")
         if kind == "ready":
+            self.shown = True
+            send_rig(live)
             send_scene(live)
         elif kind == "rest" and _whole(content.get("seq")):
             send_rest(live, content["seq"])
@@ -128,12 +144,24 @@ def send_scene(live) -> None:
         live._canvas.show_frame(live._encode(), live._seq)
         return
     content["seq"] = live._seq
+    if live.rig is not None:
+        content["q"] = live.rig.q          # the pose drawn: the browser's own may be newer
     content["face"] = css_color(live.figure.get_facecolor())
     live._canvas.send_scene(content, numbers)
 
 
+def send_rig(live) -> None:
+    """How the picture hangs on the chain (:mod:`dhlab.views.rig`), if the figure has a rig:
+    the browser then moves it as soon as a slider moves."""
+    if live.rig is None:
+        return
+    content, numbers = live.rig.describe(live.moving)
+    live._canvas.send(content, buffers=[memoryview(numbers.tobytes())])
+
+
 def send_rest(live, seq: int) -> None:
     """The browser rests on pose ``seq``: matplotlib's frame of it (if still the current one)."""
+    live.settle()        # e.g. framing the robot again after a drag: a new scene (and seq) if it redraws
     if seq == live._seq and live._canvas is not None:
         live._current_agg()
         live._canvas.show_frame(live._encode(), seq)

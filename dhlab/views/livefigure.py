@@ -38,9 +38,11 @@ from __future__ import annotations
 
 import base64
 import functools
+import math
 import os
 import struct
 import sys
+import time
 import weakref
 import zlib
 
@@ -59,6 +61,9 @@ BACKENDS = ("auto", "canvas", "ipympl", "image")
 # ipympl loses a diff frame now and then, which leaves stale pixels until the
 # next full image (matplotlib#19116); sending a full frame every so often heals it.
 _FULL_FRAME_EVERY = 30
+
+# refreshes closer than this (seconds) are a slider being dragged (LiveFigure.in_motion)
+MOTION_S = 0.3
 
 # In the browser edition (Pyodide: sys.platform "emscripten"), dropping the alpha channel is most
 # of a PNG's cost (a strided copy: 17 ms a frame there, against 7-8 ms for an RGBA PNG whose rows
@@ -97,11 +102,8 @@ def _anywidget_imports() -> bool:
 def choose_backend(backend: str = "auto") -> str:
     """The backend a LiveFigure uses: ``backend`` itself unless it is ``"auto"``; then the
     environment variable ``DHLAB_BACKEND`` if set, else ipympl under ``%matplotlib widget``,
-    else "image".
-
-    "canvas" (the browser draws the moving parts) is chosen only explicitly for now
-    (``backend="canvas"`` or ``DHLAB_BACKEND=canvas``): it is not yet measured on an idle
-    machine nor verified in the browser edition (issue 23)."""
+    else "canvas" in a Jupyter kernel where anywidget imports (JupyterLab, Notebook 7, Voila,
+    the browser edition), else "image" (a script, a test: nothing shows a widget there)."""
     if not isinstance(backend, str) or backend not in BACKENDS:
         raise DHLabError(_("backend must be one of {names}, got {backend!r}.").format(
             names=", ".join(map(repr, BACKENDS)), backend=backend))
@@ -115,6 +117,8 @@ def choose_backend(backend: str = "auto") -> str:
         return forced
     if ipympl_active():
         return "ipympl"
+    if _in_kernel() and _anywidget_imports():
+        return "canvas"
     return "image"
 
 
@@ -134,6 +138,9 @@ class LiveFigure:
         self._canvas = None          # the CanvasWidget of the canvas path, made on demand
         self._agg_stale = False      # canvas path: the Agg buffer lags behind the moving artists
         self._seq = 0                # canvas path: the number of the pose last sent
+        self.rig = None              # canvas path: how the picture follows the sliders (rig.py)
+        self._last_refresh = -math.inf  # time.monotonic() of the last refresh
+        self._at_rest = {}           # what waits until the picture stops moving (when_at_rest)
         if self.uses_ipympl:
             _attach_ipympl_canvas(self.figure)
         else:
@@ -175,6 +182,23 @@ class LiveFigure:
         for artist in self._moving:
             self.figure.draw_artist(artist)
 
+    def in_motion(self) -> bool:
+        """True while a browser moves the picture itself (canvas backend with a rig, shown) and
+        the last refresh was less than :data:`MOTION_S` ago: a slider is being dragged."""
+        return (self.rig is not None and self._canvas is not None and self._canvas.shown
+                and time.monotonic() - self._last_refresh < MOTION_S)
+
+    def when_at_rest(self, owner, action) -> None:
+        """Call ``action()`` once the picture stops moving (the browser asks for its rest frame,
+        or a picture is asked for: :meth:`png`); one pending action per ``owner``."""
+        self._at_rest[id(owner)] = action
+
+    def settle(self) -> None:
+        """Run what waited for the picture to stop moving (see :meth:`when_at_rest`)."""
+        while self._at_rest:
+            _, action = self._at_rest.popitem()
+            action()
+
     def redraw(self):
         """Draw everything again (after changing something that does not move,
         e.g. the axis limits or a title)."""
@@ -186,6 +210,7 @@ class LiveFigure:
         paths), or sends the artists to the browser (the canvas path: Agg draws them only when
         a picture is asked for, by :meth:`png` or the browser's rest frame)."""
         canvas = self.figure.canvas
+        self._last_refresh = time.monotonic()
         if self._background is None:
             canvas.draw()             # the draw_event handler caches the background
         elif self.backend == "canvas":
@@ -228,6 +253,7 @@ class LiveFigure:
 
     def png(self) -> bytes:
         """The pixels as they are now, as PNG bytes."""
+        self.settle()
         self._current_agg()
         return self._encode()
 

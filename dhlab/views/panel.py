@@ -28,7 +28,7 @@ from .keys import FIGURE_CLASS, slider_keys
 from .livefigure import LiveFigure, forget_previous_run
 from .view import one_pose
 
-__all__ = ["Panel", "joint_sliders", "slider_to_q", "q_to_slider", "unit_of", "checked_start",
+__all__ = ["Panel", "joint_sliders", "slider_to_q", "q_to_slider", "unit_of", "checked_start", "follow_sliders",
            "view_controls", "SliderEchoes"]
 
 REVOLUTE_STEP_DEG = 0.5
@@ -61,6 +61,18 @@ def slider_to_q(robot, sliders) -> np.ndarray:
     """The joint vector (radians / length units) that the sliders show."""
     return np.array([np.radians(s.value) if link.is_revolute else s.value
                      for link, s in zip(robot.links, sliders)], dtype=float)
+
+
+def follow_sliders(view, sliders) -> None:
+    """With the canvas backend, let the browser move ``view``'s robot as soon as one of the
+    joint ``sliders`` moves, before the kernel's picture arrives (see :mod:`dhlab.views.rig`;
+    the browser converts the slider's display units with the same rule as :func:`slider_to_q`)."""
+    live = view.live
+    if live is None or live.backend != "canvas":
+        return
+    from .rig import Rig
+
+    live.rig = Rig(view, sliders, [np.pi / 180 if link.is_revolute else 1.0 for link in view.robot.links])
 
 
 def checked_start(robot, q) -> np.ndarray:

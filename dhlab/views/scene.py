@@ -124,12 +124,13 @@ def describe_scene(figure, moving) -> tuple:
     numbers = _Numbers()
     scale = figure.dpi / 72.0                                  # points -> pixels
     items = []
-    for artist in moving:
+    for index, artist in enumerate(moving):
         if not artist.get_visible():
             continue
         space = axes.index(artist.axes) if artist.axes in axes else -1
         item = _describe(artist, space, numbers, scale)
         item["clip"] = _clip(artist)
+        item["artist"] = index               # which moving artist (a rig names them so: rig.py)
         items.append(item)
     content = {"items": items, "spaces": [axes_camera(ax) for ax in axes],
                "size": [figure.bbox.width, figure.bbox.height]}

@@ -20,7 +20,7 @@ import ipywidgets as widgets
 from ..i18n import _
 from ..transforms import rpy
 from ..validation import DHLabError, as_flag
-from .panel import Panel, checked_start, joint_sliders, q_to_slider, slider_to_q, view_controls
+from .panel import Panel, checked_start, follow_sliders, joint_sliders, q_to_slider, slider_to_q, view_controls
 from .view import checked_robot, default_q, robot_view
 
 __all__ = ["teach", "TeachPanel", "pose_text", "matrix_html"]
@@ -114,6 +114,7 @@ class TeachPanel(Panel):
                                 *rows, self.readout, self.matrix, *extra])
         self._refresh()
         self.observe_values(self.sliders, self._refresh)
+        follow_sliders(self.view, self.sliders)
 
     @property
     def q(self) -> np.ndarray:

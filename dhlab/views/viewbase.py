@@ -202,7 +202,12 @@ class RobotView:
         self._set_pose(self.q)
         if self.limits is not None and self.framing == "follow" and framing.needs_reframe(
                 self.ax, self._framed_points()):
-            self.reframe()
+            if self.live is not None and self.live.in_motion():
+                # the browser is moving the picture itself (canvas backend): a new frame now would
+                # cost a full redraw per step; frame the robot again once it stops
+                self.live.when_at_rest(self, self._reframe_at_rest)
+            else:
+                self.reframe()
         self._place(self.frames)
         if draw:
             self.draw()
@@ -218,6 +223,12 @@ class RobotView:
                 self.live.refresh()
         else:
             self.ax.figure.canvas.draw_idle()
+
+    def _reframe_at_rest(self) -> None:
+        if framing.needs_reframe(self.ax, self._framed_points()):
+            self.reframe()
+            self._place(self.frames)
+            self.draw()
 
     def reframe(self) -> None:
         """Fit the axes to the robot where it is now (the next draw redraws everything)."""

@@ -29,7 +29,8 @@ import numpy as np
 TIMEOUT_MS = 240_000
 WIDTH = 1400                     # the window width the course promises to fit
 HEIGHT = 1000
-FIGURE_SELECTOR = ".jupyter-matplotlib-canvas-container canvas, .widget-image"
+# ipympl's canvas, the image backend's <img>, the canvas backend's <canvas> (the default in a kernel)
+FIGURE_SELECTOR = ".jupyter-matplotlib-canvas-container canvas, .widget-image, canvas.dhlab-canvas"
 FIGURE_TEXT = re.compile(r"<(?:matplotlib\.figure\.)?Figure size [\d.]+x[\d.]+ with \d+ Axes>")
 
 # JupyterLab settings for a tested server: no news pop-ups, every cell in the DOM
@@ -58,13 +59,18 @@ def with_backend(source: Path, target: Path, backend: str | None) -> Path:
     """A copy of the notebook ``source`` at ``target``, without stored outputs, run
     under ``backend``: ``"widget"`` puts ``%matplotlib widget`` at the top of its
     first code cell, ``"inline"`` leaves the default backend (both replace a
-    ``%matplotlib`` line the notebook has)."""
+    ``%matplotlib`` line the notebook has): dhlab's panels then use the canvas backend;
+    ``"image"`` is the inline backend with dhlab's panels forced to PNG images
+    (``%env DHLAB_BACKEND=image``, the fallback where anywidget cannot load)."""
     notebook = json.loads(source.read_text(encoding="utf-8"))
     if backend is not None:
         for cell in notebook["cells"]:
             if cell["cell_type"] != "code":
                 continue
             text = "".join(cell["source"])
+            if backend == "image":
+                text = "%env DHLAB_BACKEND=image\n" + text
+                backend = "inline"
             if re.search(r"^%matplotlib\b.*$", text, flags=re.M):
                 text = re.sub(r"^%matplotlib\b.*$", f"%matplotlib {backend}", text, flags=re.M)
             elif backend != "inline":           # inline is the default: nothing to add

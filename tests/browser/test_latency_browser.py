@@ -1,7 +1,8 @@
 """How fast the SSRMS teach panel answers a key press, measured in the browser.
 
-For each backend (ipympl: ``%matplotlib widget``; the default inline backend,
-where the figure is an ``ipywidgets.Image``) the test focuses joint 2's slider
+For each of the two PNG backends (ipympl: ``%matplotlib widget``; the image backend,
+where the figure is an ``ipywidgets.Image``: the canvas backend, the default, is measured by
+test_screen_rate_browser.py) the test focuses joint 2's slider
 handle and presses the right arrow key (one 0.5° step) ``PRESSES`` times. For
 each press it records, on the page's clock (``performance.now()``):
 
@@ -155,7 +156,7 @@ def measure(page, figure, handle) -> list:
     return presses
 
 
-@pytest.mark.parametrize("backend", ["widget", "inline"])
+@pytest.mark.parametrize("backend", ["widget", "image"])
 def test_key_to_pixels_latency(lab_page, lab_root, results_dir, backend):
     copy = with_backend(HERE / "teach_demo.ipynb", lab_root / "latency" / f"teach_demo_{backend}.ipynb", backend)
     page = lab_page
@@ -180,7 +181,7 @@ def test_key_to_pixels_latency(lab_page, lab_root, results_dir, backend):
         return [p[b] - p[a] if a in p and b in p else None for p in presses]
 
     result = {
-        "backend": "ipympl (%matplotlib widget)" if backend == "widget" else "inline (ipywidgets.Image)",
+        "backend": "ipympl (%matplotlib widget)" if backend == "widget" else "image (ipywidgets.Image)",
         "presses": len(presses),
         "key_to_pixels_ms": stats(stage("key", "painted")),
         "stages_ms": {

@@ -1,4 +1,4 @@
-"""A teach panel in a real browser: JupyterLab (ipympl and inline backends) and Voilà.
+"""A teach panel in a real browser: JupyterLab (ipympl, and the default: the canvas backend) and Voilà (both).
 
 Each test opens ``teach_demo.ipynb``, runs it, moves the SSRMS's sliders with
 the keyboard (typing into a slider's readout, and arrow keys on a slider's
@@ -21,7 +21,8 @@ from labdriver import close_notebook, open_notebook, run_all
 
 HERE = Path(__file__).parent
 TIMEOUT_MS = 120_000
-FIGURE = {"widget": ".jupyter-matplotlib-canvas-container canvas", "inline": ".widget-image"}
+# "inline": the notebook's default backend, where dhlab's panels use the canvas backend
+FIGURE = {"widget": ".jupyter-matplotlib-canvas-container canvas", "inline": "canvas.dhlab-canvas"}
 
 
 def notebook_for(backend: str, folder):
@@ -131,16 +132,17 @@ def test_teach_panel_in_jupyterlab(lab_page, lab_root, results_dir, backend):
         close_notebook(page)
 
 
-def test_teach_panel_in_voila(browser, start_server, tmp_path):
+@pytest.mark.parametrize("backend", ["widget", "inline"])
+def test_teach_panel_in_voila(browser, start_server, tmp_path, backend):
     if shutil.which("voila") is None and not _has_module("voila"):
         pytest.skip("pip install voila")
-    notebook_for("widget", tmp_path)
+    notebook_for(backend, tmp_path)
     server = start_server(["voila", "teach_demo.ipynb", "--Voila.ip=127.0.0.1"],
                     tmp_path, "/", timeout=120)
     page = browser.new_page(viewport={"width": 1500, "height": 1100})
     try:
         page.goto(server.url + "/", timeout=TIMEOUT_MS)
-        check_panel(page, "widget")
+        check_panel(page, backend)
         page.screenshot(path=str(tmp_path / "final.png"))
     except Exception:
         page.screenshot(path=str(tmp_path / "failure.png"))

@@ -29,7 +29,7 @@ NOTEBOOKS = sorted(p.name for p in driver.NOTEBOOKS.glob("*.ipynb"))
 SSRMS = "07_ssrms.ipynb"
 SLIDER = ".widget-slider"
 SCREENSHOTS = Path(__file__).resolve().parents[2] / "build" / "lite-screenshots"   # the first panel of each notebook
-FIGURE = ".widget-image, .jupyter-matplotlib-canvas-container canvas"
+FIGURE = ".widget-image, .jupyter-matplotlib-canvas-container canvas, canvas.dhlab-canvas"
 BOX_INSIDE = """
 from dhlab.views import framing
 ax = panel.view.ax

@@ -1,0 +1,254 @@
+"""The rig (dhlab/views/rig.py, rig.js): the browser moves the robot's picture as soon as a slider
+moves, from the chain's kinematics and each point's node; it must land where the kernel's next
+picture puts it.
+
+For every catalogue robot: the browser's chain (rig.js, run in node) gives the same nodes as
+Python; with the rig made at one pose, the browser's prediction of another pose puts every rigged
+point within 0.5 px of where the kernel's scene of that pose (i.e. matplotlib) puts it; the probe
+leaves the view exactly as it was.
+"""
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import dhlab
+from dhlab.views.rig import Rig, nodes, program_steps
+
+NODE = shutil.which("node")
+needs_node = pytest.mark.skipif(NODE is None, reason="node (JavaScript) is not installed")
+RIG_JS = Path(dhlab.__file__).parent / "views" / "rig.js"
+
+_RUNNER = """
+import * as m from %s;
+let text = "";
+process.stdin.on("data", (d) => { text += d; });
+process.stdin.on("end", () => {
+  const jobs = JSON.parse(text);
+  const out = jobs.map((job) => {
+    if (job.nodes) return Array.from(m.chainNodes(job.steps, job.q));
+    const rigData = Float32Array.from(job.rigData), data = Float32Array.from(job.data, (v) => (v === null ? NaN : v));
+    return Array.from(m.rigged(job.rig, rigData, job.items, data, job.q), (v) => (Number.isNaN(v) ? null : v));
+  });
+  process.stdout.write(JSON.stringify(out));
+});
+"""
+
+
+def run_js(jobs: list) -> list:
+    result = subprocess.run([NODE, "--input-type=module", "-e", _RUNNER % json.dumps(RIG_JS.as_uri())],
+                            input=json.dumps(jobs), capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr[-2000:]
+    return json.loads(result.stdout)
+
+
+def random_q(robot, rng):
+    lo, hi = np.array(robot.qlim, dtype=float).T
+    return rng.uniform(np.maximum(lo, -np.pi), np.minimum(hi, np.pi))
+
+
+def test_the_nodes_hold_every_frame_and_end_at_the_end_effector():
+    rng = np.random.default_rng(1)
+    for name, make in dhlab.robots.catalogue().items():
+        robot = make()
+        for _ in range(3):
+            q = random_q(robot, rng)
+            N = nodes(robot, q)
+            np.testing.assert_allclose(N[-1], robot.fk(q), atol=1e-12, err_msg=name)
+            for frame in robot.frames(q):
+                assert np.abs(N - frame).max(axis=(1, 2)).min() < 1e-12, name
+
+
+@needs_node
+def test_the_browser_chain_is_pythons():
+    rng = np.random.default_rng(2)
+    jobs, expected = [], []
+    for make in dhlab.robots.catalogue().values():
+        robot = make()
+        for _ in range(4):
+            q = random_q(robot, rng)
+            jobs.append({"nodes": True, "steps": program_steps(robot), "q": q.tolist()})
+            expected.append(nodes(robot, q))
+    for got, want in zip(run_js(jobs), expected):
+        np.testing.assert_allclose(np.reshape(got, want.shape), want, atol=1e-12)
+
+
+def scene(panel):
+    """The scene the kernel sends now (content, float32 numbers) and the moving artists."""
+    from dhlab.views.scene import describe_scene
+
+    live = panel.view.live
+    content, numbers = describe_scene(live.figure, live.moving)
+    return content, numbers
+
+
+def pixels_of(content, item, numbers):
+    """Canvas pixels of an item's data points with its space's matrix P."""
+    key = {"line": "points", "polys": "faces", "glyphs": "anchors"}[item["kind"]]
+    at, count = item[key][0], item[key][1] * (item[key][2] if key == "faces" else 1)
+    points = np.asarray(numbers[at:at + 3 * count], dtype=float).reshape(-1, 3)
+    P = np.reshape(content["spaces"][item["space"]]["P"], (4, 4))
+    h = np.column_stack([points, np.ones(len(points))]) @ P.T
+    return h[:, :2] / h[:, 3:]
+
+
+def panels():
+    for name, make in dhlab.robots.catalogue().items():
+        robot = make()
+        yield name, dhlab.teach(robot, backend="canvas")
+        if getattr(robot, "is_planar", False):
+            yield name + " (2D)", dhlab.teach(make(), backend="canvas", planar=True)
+
+
+@needs_node
+def test_the_browsers_picture_of_a_new_pose_is_the_kernels():
+    rng = np.random.default_rng(3)
+    jobs, checks = [], []
+    for name, panel in panels():
+        live = panel.view.live
+        live.widget
+        rig_content, rig_numbers = live.rig.describe(live.moving)
+        before, data = scene(panel)
+        q1 = random_q(panel.robot, rng)
+        panel.set_q(q1)
+        after, truth = scene(panel)
+        q1 = panel.q                          # as the sliders show it (rounded to their steps)
+        jobs.append({"rig": rig_content, "rigData": rig_numbers.tolist(), "items": before["items"],
+                     "data": [None if v != v else float(v) for v in data], "q": q1.tolist()})
+        checks.append((name, rig_content, rig_numbers, before, after, truth))
+        panel.close()
+    for got, (name, rig, rig_numbers, before, after, truth) in zip(run_js(jobs), checks):
+        got = np.array([np.nan if v is None else v for v in got], dtype=np.float32)
+        checked = 0
+        for item0, item1 in zip(before["items"], after["items"]):
+            assert item0["artist"] == item1["artist"]
+            for entry in rig["artists"].get(str(item0["artist"]), []):
+                key = entry["key"]
+                if item0[key][1:] != item1[key][1:]:
+                    continue                  # a different number of points: the kernel's picture is used
+                node = rig_numbers[entry["nodes"]:entry["nodes"] + entry["count"]]
+                predicted = pixels_of(after, item0, got)[node >= 0]
+                actual = pixels_of(after, item1, truth)[node >= 0]
+                error = np.abs(predicted - actual).max() if len(actual) else 0.0
+                assert error < 0.5, f"{name}: artist {item0['artist']} ({key}) off by {error:.3f} px"
+                checked += int((node >= 0).sum())
+        assert checked > 10, name
+
+
+def test_the_teach_panels_robot_is_rigged_whole():
+    """Every point the SSRMS and the PUMA panels move is carried by a node: nothing waits for the kernel."""
+    for robot in (dhlab.robots.ssrms(), dhlab.robots.puma560()):
+        panel = dhlab.teach(robot, backend="canvas")
+        live = panel.view.live
+        content, numbers = live.rig.describe(live.moving)
+        rigged = {int(k) for k in content["artists"]}
+        visible = {k for k, a in enumerate(live.moving) if a.get_visible() and a in panel.view.artists}
+        assert visible <= rigged
+        for entries in content["artists"].values():
+            for entry in entries:
+                node = numbers[entry["nodes"]:entry["nodes"] + entry["count"]]
+                assert (node != -1).all()
+        assert content["sliders"] == [s.model_id for s in panel.sliders]
+        np.testing.assert_allclose(content["scales"], [np.pi / 180] * robot.n)
+
+
+def test_probing_leaves_the_picture_as_it_was():
+    panel = dhlab.teach(dhlab.robots.ssrms(), backend="canvas")
+    panel.sliders[1].value = 35.0
+    live = panel.view.live
+    before = scene(panel)
+    frames = panel.view.frames.copy()
+    live.rig.describe(live.moving)
+    after = scene(panel)
+    assert json.dumps(before[0]) == json.dumps(after[0])
+    np.testing.assert_array_equal(before[1], after[1])
+    np.testing.assert_array_equal(frames, panel.view.frames)
+
+
+def test_the_browser_gets_the_rig_and_every_scene_says_its_pose():
+    panel = dhlab.teach(dhlab.robots.ssrms(), backend="canvas")
+    widget = panel.view.live.widget
+    sent = []
+    widget.send = lambda content, buffers=None: sent.append(content)
+    widget._on_browser_message(widget, {"kind": "ready"}, [])
+    assert [m["kind"] for m in sent] == ["rig", "scene"]
+    panel.sliders[2].value = -20.0
+    assert sent[-1]["kind"] == "scene"
+    np.testing.assert_allclose(sent[-1]["q"], panel.q)
+    # without the canvas backend there is no rig
+    assert dhlab.teach(dhlab.robots.ssrms(), backend="image").view.live.rig is None
+
+
+def test_a_pose_with_a_different_number_of_points_keeps_the_kernels_points():
+    """rig.js skips an item whose point count is not the rig's (e.g. labels grouped otherwise)."""
+    if NODE is None:
+        pytest.skip("node is not installed")
+    rig = {"steps": [], "artists": {"0": [{"key": "points", "count": 3, "nodes": 0, "local": 3}]}}
+    rig_data = [0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3]
+    items = [{"kind": "line", "space": 0, "artist": 0, "points": [0, 2]}]
+    data = [9.0] * 6
+    got, = run_js([{"rig": rig, "rigData": rig_data, "items": items, "data": data, "q": []}])
+    assert got == data
+    items[0]["points"] = [0, 3]
+    got, = run_js([{"rig": rig, "rigData": rig_data, "items": items, "data": [9.0] * 9, "q": []}])
+    assert got == [1, 1, 1, 2, 2, 2, 3, 3, 3]
+
+
+def sweep(panel, joint=1, steps=40):
+    s = panel.sliders[joint]
+    for v in np.r_[np.linspace(s.value, s.max, steps), np.linspace(s.max, s.min, steps)]:
+        s.value = round(float(v) * 2) / 2
+
+
+def test_a_drag_frames_the_robot_again_only_when_it_stops():
+    """While a browser moves the picture, reframing (a full redraw, ~100 ms) waits for the rest."""
+    from dhlab.views import framing
+
+    panel = dhlab.teach(dhlab.robots.ssrms(), backend="canvas")
+    live = panel.view.live
+    widget = live.widget
+    sent = []
+    widget.send = lambda content, buffers=None: sent.append(content)
+    widget._on_browser_message(widget, {"kind": "ready"}, [])
+    backgrounds = []
+    widget.observe(lambda change: backgrounds.append(1), names="background")
+    sweep(panel)
+    assert backgrounds == [] and live._at_rest               # no redraw while moving, one waiting
+    widget._on_browser_message(widget, {"kind": "rest", "seq": live._seq}, [])
+    assert not live._at_rest and backgrounds                 # framed again (its layout may draw twice)
+    assert not framing.needs_reframe(panel.view.ax, panel.view._framed_points())
+    widget._on_browser_message(widget, {"kind": "rest", "seq": live._seq}, [])
+    assert widget.frame_seq == live._seq                     # then the exact frame
+
+
+def test_without_a_browser_every_step_is_framed_at_once():
+    """No browser said "ready" (a script, nbval): nothing waits; the same limits as the image path."""
+    limits = []
+    for backend in ("canvas", "image"):
+        panel = dhlab.teach(dhlab.robots.ssrms(), backend=backend)
+        panel.view.live.widget
+        sweep(panel)
+        assert not panel.view.live._at_rest
+        limits.append(panel.view.limits)
+    np.testing.assert_allclose(np.asarray(limits[0], float), np.asarray(limits[1], float))
+
+
+def test_a_picture_asked_for_after_a_drag_is_framed():
+    """png() (what a static output or a screenshot takes) frames the robot first."""
+    from dhlab.views import framing
+
+    panel = dhlab.teach(dhlab.robots.ssrms(), backend="canvas")
+    live = panel.view.live
+    widget = live.widget
+    widget.send = lambda content, buffers=None: None
+    widget._on_browser_message(widget, {"kind": "ready"}, [])
+    sweep(panel)
+    assert live._at_rest
+    live.png()
+    assert not live._at_rest
+    assert not framing.needs_reframe(panel.view.ax, panel.view._framed_points())
