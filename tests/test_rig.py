@@ -252,3 +252,27 @@ def test_a_picture_asked_for_after_a_drag_is_framed():
     live.png()
     assert not live._at_rest
     assert not framing.needs_reframe(panel.view.ax, panel.view._framed_points())
+
+
+def test_while_dragged_the_labels_keep_their_place_and_rest_lays_them_out():
+    """A step of a drag skips the labels' layout (half a step's cost): each label keeps its offset
+    from its origin; the next step after a pause lays them out again."""
+    panel = dhlab.teach(dhlab.robots.ssrms(), backend="canvas")
+    live = panel.view.live
+    widget = live.widget
+    sent = []
+    widget.send = lambda content, buffers=None: sent.append((content, buffers))
+    widget._on_browser_message(widget, {"kind": "ready"}, [])
+    calls = []
+    layout = type(panel.view.labels)._layout
+    panel.view.labels._layout = lambda: (calls.append(1), layout(panel.view.labels))
+    live._last_refresh -= 1.0                      # the panel was made a while ago
+    for value in (10.0, 12.0, 14.0):
+        panel.sliders[1].value = value
+    assert live.dragged and len(calls) == 1        # the first step laid them out, the next two did not
+    glyphs = [[i for i in content["items"] if i["kind"] == "glyphs" and i.get("leaders")][0]
+              for content, _ in sent if content.get("kind") == "scene"][-2:]
+    assert [p["codes"] for p in glyphs[0]["pieces"]] == [p["codes"] for p in glyphs[1]["pieces"]]
+    live._last_refresh -= 1.0                      # a pause
+    panel.sliders[1].value = 16.0
+    assert not live.dragged and len(calls) == 2

@@ -138,7 +138,7 @@ def _background_png(live) -> bytes:
 def send_scene(live) -> None:
     """The moving artists to the browser; a full frame if one of them cannot be sent."""
     try:
-        content, numbers = describe_scene(live.figure, live.moving)
+        content, numbers = describe_scene(live.figure, live.moving, quick=live.dragged)
     except Unsupported:
         live._current_agg()
         live._canvas.show_frame(live._encode(), live._seq)

@@ -141,6 +141,7 @@ class LiveFigure:
         self.rig = None              # canvas path: how the picture follows the sliders (rig.py)
         self._last_refresh = -math.inf  # time.monotonic() of the last refresh
         self._at_rest = {}           # what waits until the picture stops moving (when_at_rest)
+        self.dragged = False         # this refresh follows another closely (see in_motion)
         if self.uses_ipympl:
             _attach_ipympl_canvas(self.figure)
         else:
@@ -202,6 +203,7 @@ class LiveFigure:
     def redraw(self):
         """Draw everything again (after changing something that does not move,
         e.g. the axis limits or a title)."""
+        self.dragged = False
         self.figure.canvas.draw()
         self._publish()
 
@@ -210,6 +212,7 @@ class LiveFigure:
         paths), or sends the artists to the browser (the canvas path: Agg draws them only when
         a picture is asked for, by :meth:`png` or the browser's rest frame)."""
         canvas = self.figure.canvas
+        self.dragged = self.in_motion()      # the previous refresh was a moment ago
         self._last_refresh = time.monotonic()
         if self._background is None:
             canvas.draw()             # the draw_event handler caches the background

@@ -141,6 +141,8 @@ class Rig:
         finally:
             view._set_pose(q0)
             view._place(view.frames)
+            for artist in moving:                  # labels placed for a probe: place them afresh
+                artist.__dict__.pop("_dhlab_placed", None)
         node_poses = np.array([nodes(robot, q) for q in poses])
         size = max(float(robot.reach()), 1e-6)
         numbers, artists = _Numbers(), {}

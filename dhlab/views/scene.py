@@ -117,9 +117,13 @@ def _compose(A, M) -> np.ndarray:
     return P
 
 
-def describe_scene(figure, moving) -> tuple:
+def describe_scene(figure, moving, quick: bool = False) -> tuple:
     """(content, numbers): a JSON-able description of the visible moving artists of ``figure``
-    in drawing order, and the float32 array their points live in. Raises Unsupported."""
+    in drawing order, and the float32 array their points live in. Raises Unsupported.
+
+    ``quick`` (while a slider is dragged): frame labels keep where they sat, beside their
+    origins, at the last full layout (placing them afresh is half the cost of a step); the
+    picture at rest lays them out again."""
     axes = [ax for ax in figure.axes]
     numbers = _Numbers()
     scale = figure.dpi / 72.0                                  # points -> pixels
@@ -128,7 +132,7 @@ def describe_scene(figure, moving) -> tuple:
         if not artist.get_visible():
             continue
         space = axes.index(artist.axes) if artist.axes in axes else -1
-        item = _describe(artist, space, numbers, scale)
+        item = _describe(artist, space, numbers, scale, quick)
         item["clip"] = _clip(artist)
         item["artist"] = index               # which moving artist (a rig names them so: rig.py)
         items.append(item)
@@ -137,9 +141,9 @@ def describe_scene(figure, moving) -> tuple:
     return content, numbers.buffer()
 
 
-def _describe(artist, space, numbers, scale) -> dict:
+def _describe(artist, space, numbers, scale, quick=False) -> dict:
     if isinstance(artist, FrameLabels):
-        return _labels(artist, space, numbers)
+        return _labels(artist, space, numbers, quick)
     if isinstance(artist, Line2D):
         return _line(artist, space, numbers, scale)
     if isinstance(artist, art3d.Poly3DCollection):
@@ -296,21 +300,22 @@ def _polys2d(polys, space, numbers, scale) -> dict:
             "width": float(np.ravel(polys.get_linewidth())[0]) * scale}
 
 
-def _labels(labels, space, numbers) -> dict:
+def _labels(labels, space, numbers, quick=False) -> dict:
     """Frame labels: their outlines (pixels, y down) relative to their origin's pixel, which the
     browser projects, so that while it turns the view the labels travel with their origins."""
-    labels._layout()                                  # where matplotlib would put them now
     points = labels._points[:, :labels._dims]
     groups = [g[0] for g in _groups(labels)]
-    anchors = labels._to_pixels(points)[groups]
-    corners = labels.get_offsets()
-    pieces = []
-    for path, corner, anchor in zip(labels.get_paths(), corners, anchors):
-        move = Affine2D().translate(*(corner - anchor)).scale(1, -1)
-        pieces.append(_path(path, move, numbers))
-    leaders = np.array([seg for seg in labels.leaders.get_segments()], dtype=float).reshape(-1, 2, 2)
-    anchor_of = [int(np.argmin(np.linalg.norm(anchors - seg[0], axis=1))) for seg in leaders]
-    leader_deltas = [(seg - anchors[k]) * [1, -1] for seg, k in zip(leaders, anchor_of)]
+    last = getattr(labels, "_dhlab_placed", None)
+    if not (quick and last is not None and last[0] == groups):
+        labels._layout()                              # where matplotlib would put them now
+        anchors = labels._to_pixels(points)[groups]
+        leaders = np.array([seg for seg in labels.leaders.get_segments()], dtype=float).reshape(-1, 2, 2)
+        anchor_of = [int(np.argmin(np.linalg.norm(anchors - seg[0], axis=1))) for seg in leaders]
+        last = labels._dhlab_placed = (groups, labels.get_offsets() - anchors, anchor_of,
+                                       [(seg - anchors[k]) * [1, -1] for seg, k in zip(leaders, anchor_of)])
+    _, offsets, anchor_of, leader_deltas = last
+    pieces = [_path(path, Affine2D().translate(*offset).scale(1, -1), numbers)
+              for path, offset in zip(labels.get_paths(), offsets)]
     anchor_points = np.column_stack([points[groups], np.zeros((len(groups), 3 - points.shape[1]))])
     return {"kind": "glyphs", "space": space, "anchors": [numbers.add(anchor_points), len(groups)],
             "pieces": pieces, "fill": _css(_colors(labels.get_facecolor(), 1)[0]),
