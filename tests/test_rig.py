@@ -276,3 +276,33 @@ def test_while_dragged_the_labels_keep_their_place_and_rest_lays_them_out():
     live._last_refresh -= 1.0                      # a pause
     panel.sliders[1].value = 16.0
     assert not live.dragged and len(calls) == 2
+
+
+@needs_node
+def test_the_spaces_panel_moves_its_mechanism_in_the_browser_too():
+    robot = dhlab.robots.pr_mechanism()
+    panel = dhlab.spaces(robot, backend="canvas",
+                         ik=lambda x, y: dhlab.ik.pr_mechanism_ik(robot, x, y))
+    live = panel.view.live
+    live.widget
+    rig, rig_numbers = live.rig.describe(live.moving)
+    assert rig["sliders"] == [s.model_id for s in panel.sliders]
+    before, data = scene(panel)
+    panel.sliders[0].value = 1.5
+    panel.sliders[1].value = 40.0
+    after, truth = scene(panel)
+    got, = run_js([{"rig": rig, "rigData": rig_numbers.tolist(), "items": before["items"],
+                    "data": [None if v != v else float(v) for v in data], "q": panel.q.tolist()}])
+    got = np.array([np.nan if v is None else v for v in got], dtype=np.float32)
+    mine = {str(live.moving.index(a)) for a in panel.view.artists}
+    checked = 0
+    for item0, item1 in zip(before["items"], after["items"]):
+        for entry in rig["artists"].get(str(item0["artist"]), []):
+            assert str(item0["artist"]) in mine            # only the mechanism is rigged, not the ghosts
+            node = rig_numbers[entry["nodes"]:entry["nodes"] + entry["count"]]
+            if item0[entry["key"]][1:] != item1[entry["key"]][1:]:
+                continue
+            error = np.abs(pixels_of(after, item0, got) - pixels_of(after, item1, truth))[node >= 0]
+            assert error.max() < 0.5
+            checked += int((node >= 0).sum())
+    assert checked > 10

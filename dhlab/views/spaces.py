@@ -43,7 +43,7 @@ from matplotlib.transforms import offset_copy
 from ..i18n import _
 from ..validation import DHLabError, as_choice, as_length, check_joint_values, describe
 from .livefigure import LiveFigure
-from .panel import Panel, SliderEchoes, checked_start, joint_sliders, q_to_slider, unit_of
+from .panel import Panel, SliderEchoes, checked_start, follow_sliders, joint_sliders, q_to_slider, unit_of
 from .view import checked_robot, default_q, robot_view
 
 __all__ = ["spaces", "SpacesPanel", "wrap_into_limits"]
@@ -153,6 +153,7 @@ class SpacesPanel(Panel):
         self.branch = None
         self.target = None
         self.run(self._from_joints)
+        follow_sliders(self.view, self.sliders)     # the browser moves the mechanism at once
         for j, slider in enumerate(self.sliders):
             slider.observe(lambda change, j=j: self._slider_moved(self._joint_moved, change, j), names="value")
         for k, slider in enumerate(self.target_sliders):
