@@ -6,6 +6,10 @@ For each backend ("image": Agg + PNG into an Image widget; "ipympl": Agg + a dif
 the moving artists as numbers, see dhlab/views/canvas.py) it times ``view.update(q)`` (forward
 kinematics, mechanism, artists, and what the backend sends) and a whole slider step (the panel's
 readouts and matrix too), then the canvas' rest frame (Agg + PNG, once the figure holds still).
+"canvas, dragged" is the canvas backend shown in a browser while a slider is dragged (steps
+closer than 0.3 s: frame labels keep their place, see dhlab/views/scene.py). Then a sweep of
+joint 2 across its range and back (the robot leaves its frame: the PNG backends frame it again
+at once, a full redraw; a dragged canvas when the drag stops, see dhlab/views/rig.py): total ms.
 The browser's share (decode/paint) is measured by the browser tier (tests/browser).
 """
 from __future__ import annotations
@@ -29,18 +33,40 @@ def timed(action, repeats: int) -> list:
     return out
 
 
-def bench(backend: str, robot_name: str, steps: int) -> dict:
+def shown(backend: str, robot_name: str, dragged: bool = False):
     panel = dhlab.teach(getattr(dhlab.robots, robot_name)(), backend=backend)
-    live = panel.view.live
-    widget = live.widget                                   # as shown in a notebook
+    widget = panel.view.live.widget                        # as shown in a notebook
     if backend == "canvas":
         widget.send = lambda content, buffers=None: None   # no front end here: the bytes go nowhere
+        if dragged:                                        # a browser shows it (and has the rig)
+            widget._on_browser_message(widget, {"kind": "ready"}, [])
+    return panel
+
+
+def sweep_ms(backend: str, robot_name: str, dragged: bool = False) -> float:
+    """Joint 2 from its value to its upper limit, down to its lower one and back: total ms."""
+    panel = shown(backend, robot_name, dragged)
+    slider = panel.sliders[1]
+    values = np.r_[np.linspace(slider.value, slider.max, 40), np.linspace(slider.max, slider.min, 80),
+                   np.linspace(slider.min, slider.value, 40)]
+    start = time.perf_counter()
+    for value in values:
+        slider.value = round(float(value) * 2) / 2
+    total = 1000 * (time.perf_counter() - start)
+    panel.close()
+    return total
+
+
+def bench(backend: str, robot_name: str, steps: int, dragged: bool = False) -> dict:
+    panel = shown(backend, robot_name, dragged)
+    live = panel.view.live
     q0 = panel.view.q.copy()
     slider = panel.sliders[1]
     poses = [q0 + np.deg2rad(0.5 * (k % 40)) * np.eye(len(q0))[1] for k in range(steps)]
     update = timed(lambda k: panel.view.update(poses[k]), steps)
     step = timed(lambda k: setattr(slider, "value", slider.value + (0.5 if k % 80 < 40 else -0.5)), steps)
-    row = {"backend": backend, "update": statistics.median(update), "step": statistics.median(step)}
+    row = {"backend": backend + (", dragged" if dragged else ""), "update": statistics.median(update),
+           "step": statistics.median(step), "sweep": sweep_ms(backend, robot_name, dragged)}
     if backend == "canvas":
         row["rest"] = statistics.median(timed(lambda k: (setattr(live, "_agg_stale", True),
                                                          send_rest(live, live._seq)), 15))
@@ -59,12 +85,13 @@ def main():
         backends.insert(1, "ipympl")
     except ImportError:
         pass
-    rows = [bench(b, args.robot, args.steps) for b in backends]
-    canvas = rows[-1]
-    print(f"{args.robot}: kernel ms per update, median of {args.steps}")
-    print(f"{'backend':8} {'view.update':>12} {'slider step':>12} {'update vs canvas':>17}")
+    rows = [bench(b, args.robot, args.steps) for b in backends] + [bench("canvas", args.robot, args.steps, True)]
+    canvas = rows[-2]
+    print(f"{args.robot}: kernel ms per update, median of {args.steps}; a 160-step sweep of joint 2, total ms")
+    print(f"{'backend':16} {'view.update':>12} {'slider step':>12} {'step vs image':>14} {'sweep':>8}")
     for row in rows:
-        print(f"{row['backend']:8} {row['update']:12.1f} {row['step']:12.1f} {row['update'] / canvas['update']:16.1f}x")
+        print(f"{row['backend']:16} {row['update']:12.1f} {row['step']:12.1f} "
+              f"{rows[0]['step'] / row['step']:13.1f}x {row['sweep']:8.0f}")
     print(f"canvas rest frame (Agg + PNG, once the figure holds still): {canvas['rest']:.1f} ms")
 
 
