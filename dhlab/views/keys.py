@@ -1,15 +1,18 @@
-"""Keys that reach the slider: a panel's sliders take the arrow keys, Page Up/Down,
+"""Keys that reach the slider: a panel's focused slider takes the arrow keys, Page Up/Down,
 Home and End wherever the panel is shown (JupyterLab, the browser edition, Voilà, a
-lecture deck), and the figure's picture cannot be dragged away.
+lecture deck), every other key (Space: next slide) still reaches JupyterLab's shortcuts,
+and the figure's picture cannot be dragged away.
 
 Why a widget of its own: JupyterLab's keyboard shortcuts see a key before the page's
 widgets do; in the browser edition (JupyterLab 4.4) and in the decks
 (jupyterlab-slideshow binds → to "next slide") a focused slider never got its arrow
-keys. JupyterLab's own way out is an HTML attribute, ``data-lm-suppress-shortcuts``,
-on the element the key is typed into: no shortcut applies there. ipywidgets cannot
+keys. JupyterLab's own way out is an HTML attribute, ``data-lm-suppress-shortcuts``:
+no shortcut applies to a key typed inside an element that has it. ipywidgets cannot
 set an attribute on a slider, so :class:`SliderKeys`, an invisible widget (anywidget,
-its ES module is ``keys.js``) put in the panel, sets it on every slider of its panel,
-and stops the browser's drag of an ``<img>`` figure (``draggable=false``, and CSS).
+its ES module is ``keys.js``) put in the panel, sets it on the focused slider while one
+of the slider's own keys is dispatched, and only then (left there, it would stop Space
+too: a lecturer could not go on after dragging a slider), and stops the browser's drag
+of an ``<img>`` figure (``draggable=false``, and CSS).
 
 >>> keys = slider_keys()           # None where anywidget is not installed
 >>> keys is None or keys.layout.display == "none"

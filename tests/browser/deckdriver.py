@@ -21,7 +21,7 @@ from pathlib import Path
 
 DECK_WIDTH, DECK_HEIGHT = 1920, 1080          # a projector
 NOTEBOOK_JS = "(window.__dhlabNotebook || window.jupyterapp.shell.currentWidget)"
-FIGURE_SELECTOR = ".jupyter-matplotlib-canvas-container canvas, .widget-image"
+FIGURE_SELECTOR = ".jupyter-matplotlib-canvas-container canvas, .widget-image, canvas.dhlab-canvas"
 PROJECTOR_LINE = "dhlab.projector()"
 
 
@@ -223,9 +223,9 @@ def move_slider_in_deck(page, output) -> float:
 
 
 def drag_slider_in_deck(page, output) -> float:
-    """The panel's first slider dragged with the mouse, inside the deck (as a lecturer does in the
-    browser edition, where the arrow keys go to the deck, not to the slider: JupyterLite's JupyterLab
-    reads the keys before the page's widgets do); the fraction of the figure's pixels changed."""
+    """The panel's first slider dragged with the mouse, inside the deck, as a lecturer does; the
+    fraction of the figure's pixels changed. The focus stays on the slider's handle: the walk's next
+    Space must still go on (issue 23: it did not while the panel marked its sliders for good)."""
     from labdriver import changed_fraction
 
     figure = output.locator(FIGURE_SELECTOR).first

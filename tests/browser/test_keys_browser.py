@@ -1,16 +1,20 @@
-"""Keys reach a focused slider, and the inline figure is not dragged away (issue 23).
+"""Keys reach a focused slider, the other keys still reach JupyterLab, and the inline figure is
+not dragged away (issue 23).
 
 JupyterLab's shortcuts read a key before the page's widgets: the panel's invisible
-``SliderKeys`` widget (dhlab/views/keys.py + keys.js) puts ``data-lm-suppress-shortcuts``
-on its sliders, so no shortcut applies to a key typed on one. The test checks the
-attribute is there on every slider of the SSRMS teach panel, that a slider *clicked with
-the mouse* then takes ArrowRight, ArrowUp, PageUp, ArrowLeft, PageDown, Home and End
-while the focus stays on it, and — in a notebook whose shortcuts would take → (a binding
-like the browser edition's and the decks', added for the test) — that the slider still
-gets the key. The inline backend's ``<img>`` is not draggable.
+``SliderKeys`` widget (dhlab/views/keys.py + keys.js) puts ``data-lm-suppress-shortcuts`` on
+the focused slider while one of its own keys is dispatched, so no shortcut applies to that key.
+The test clicks a slider of the SSRMS teach panel *with the mouse* and checks that it then
+takes ArrowRight, ArrowUp, PageUp, ArrowLeft, PageDown, Home and End while the focus stays on
+it and the notebook's cursor stays on its cell — in a notebook whose shortcuts would take those
+keys (a binding like the browser edition's and the decks', added for the test) — and that a
+key that is not the slider's, J (command mode: next cell), still acts with the focus on the
+slider, as Space (next slide) must in a deck: the attribute left on the slider stopped every
+shortcut (the deck stopped at the first slider). The inline backend's ``<img>`` is not draggable.
 """
 from __future__ import annotations
 
+import json
 import time
 
 import pytest
@@ -35,7 +39,7 @@ GREEDY_BINDING = """() => {
   }
 }"""
 
-
+ACTIVE_CELL = f"() => {labdriver.NOTEBOOK_JS}.content.activeCellIndex"
 
 
 def value(handle) -> float:
@@ -46,15 +50,15 @@ def value(handle) -> float:
 def test_a_clicked_slider_takes_its_keys_even_where_a_shortcut_wants_them(lab_page, lab_root, backend):
     page = lab_page
     path = labdriver.ssrms_panel_notebook(lab_root / "keys", backend, "keys")
+    notebook = json.loads(path.read_text())          # a cell after the panel, for J to go to
+    notebook["cells"].append({"cell_type": "markdown", "id": "after", "metadata": {}, "source": "After."})
+    path.write_text(json.dumps(notebook))
     try:
         open_notebook(page, f"keys/{path.name}")
         run_all(page)
         output = page.locator(".jp-OutputArea-output", has=page.locator(".widget-slider")).first
         output.locator(FIGURE).first.wait_for(timeout=TIMEOUT_MS)
-        sliders = output.locator(".widget-slider")
-        page.wait_for_function("(n) => document.querySelectorAll("
-                               "'.widget-slider[data-lm-suppress-shortcuts]').length >= n",
-                               arg=sliders.count(), timeout=20_000)
+        output.locator(".dhlab-keys").wait_for(state="attached", timeout=20_000)
         page.evaluate(GREEDY_BINDING)
         page.evaluate("() => window.jupyterapp.commands.execute('notebook:enter-command-mode')")
         handle = output.locator(".widget-slider .noUi-handle").nth(1)
@@ -63,6 +67,7 @@ def test_a_clicked_slider_takes_its_keys_even_where_a_shortcut_wants_them(lab_pa
         page.mouse.click(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
         time.sleep(0.3)
         low, high = (float(handle.get_attribute(f"aria-value{k}")) for k in ("min", "max"))
+        cell_before = page.evaluate(ACTIVE_CELL)
         moves = []
         for key in ("Home", "ArrowRight", "ArrowUp", "PageUp", "ArrowLeft", "PageDown", "End"):
             before = value(handle)
@@ -71,6 +76,11 @@ def test_a_clicked_slider_takes_its_keys_even_where_a_shortcut_wants_them(lab_pa
             moves.append((key, before, value(handle)))
         taken = page.evaluate("() => window.__dhlabTaken")
         focused = handle.evaluate("e => e === document.activeElement")
+        cell_after_keys = page.evaluate(ACTIVE_CELL)
+        left_marked = output.locator("[data-lm-suppress-shortcuts]").count()
+        page.keyboard.press("j")                      # not a slider key: the notebook's "next cell"
+        time.sleep(0.3)
+        cell_after_j = page.evaluate(ACTIVE_CELL)
         if backend == "image":
             image = output.locator("img.widget-image").first
             assert image.evaluate("e => e.draggable") is False, "the figure's picture can be dragged"
@@ -82,3 +92,9 @@ def test_a_clicked_slider_takes_its_keys_even_where_a_shortcut_wants_them(lab_pa
     for key, before, after in moves[1:-1]:
         assert (after > before) if key in ("ArrowRight", "ArrowUp", "PageUp") else (after < before), moves
     assert focused, "the focus left the slider"
+    assert cell_before == cell_after_keys == 0, \
+        f"the slider's keys moved the notebook's cursor: cell {cell_before} -> {cell_after_keys}"
+    assert cell_after_j == 1, ("J typed with the focus on a slider did not reach the notebook (its cursor stayed "
+                               f"on cell {cell_after_j}): the panel stops the shortcuts of keys that are not the "
+                               "slider's (a deck's Space too)")
+    assert left_marked == 0, f"{left_marked} elements of the panel keep data-lm-suppress-shortcuts after the keys"

@@ -62,7 +62,8 @@ def test_deck_in_the_browser_edition(stem, backend, site, visit, measurements):
     driver.run_through(page, code[-1])
     SCREENSHOTS.mkdir(parents=True, exist_ok=True)
     try:
-        # the slider is dragged: in the browser edition the arrow keys go to the deck (lite/README.md)
+        # the slider is dragged, then Space goes on with the focus still on it (the JupyterLab tier
+        # moves it with the keys: both ways must leave Space to the deck)
         measured = check_deck(page, f"{stem}-{backend}", SCREENSHOTS, slider_by="mouse")
     finally:
         stop_deck(page)
