@@ -70,10 +70,15 @@ def pytest_terminal_summary(terminalreporter):
     if not _measured:
         return
     MEASUREMENTS.parent.mkdir(exist_ok=True)
-    MEASUREMENTS.write_text(json.dumps(_measured, indent=2, sort_keys=True))
     _measured["machine: cores, load average over 1/5/15 min at the end"] = \
         f"{os.cpu_count()}, " + "/".join(f"{x:.1f}" for x in os.getloadavg())
-    MEASUREMENTS.write_text(json.dumps(_measured, indent=2, sort_keys=True))
+    # a run of some tests (-k) updates their entries and keeps the others' from earlier runs
+    try:
+        everything = json.loads(MEASUREMENTS.read_text())
+    except (OSError, ValueError):
+        everything = {}
+    everything.update(_measured)
+    MEASUREMENTS.write_text(json.dumps(everything, indent=2, sort_keys=True))
     terminalreporter.section("browser edition: measurements")
     for key, value in sorted(_measured.items()):
         terminalreporter.write_line(f"{key}: {value}")
