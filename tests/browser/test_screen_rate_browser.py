@@ -196,6 +196,44 @@ def test_panel_holds_still_while_a_slider_sweeps(browser, lab_server, lab_root, 
     assert np.ptp(widths) <= 1 and np.ptp(heights) <= 1, f"the panel changed size: {sizes}"
 
 
+def test_the_robot_moves_while_the_kernel_runs_another_cell(browser, lab_server, lab_root, results_dir):
+    """Canvas backend: with the kernel busy (a cell sleeping 10 s), arrow keys on a slider still
+    move the robot (the browser computes the pose: dhlab/views/rig.py); the kernel's readout
+    follows once the cell ends."""
+    skip_unless_available("canvas")
+    page = labdriver.open_lab(browser, lab_server, 1400, 1000)
+    try:
+        output, figure = opened_panel(page, lab_root, "canvas")
+        readout = output.locator(".widget-html", has_text="x = ").first
+        text = readout.inner_text()
+        before = settled(figure, pause=0.3)
+        page.evaluate(f"""() => {{ window.__busy = {NOTEBOOK_JS}.sessionContext.session.kernel
+            .requestExecute({{code: 'import time; time.sleep(10)'}}).done; }}""")
+        page.wait_for_function(f"() => {NOTEBOOK_JS}.sessionContext.session.kernel.status === 'busy'")
+        handle = output.locator(".widget-slider .noUi-handle").nth(SLIDER)
+        handle.focus()
+        for _ in range(10):
+            page.keyboard.press("ArrowRight")
+        time.sleep(0.5)
+        moved = settled(figure, pause=0.2)
+        busy = page.evaluate(f"() => {NOTEBOOK_JS}.sessionContext.session.kernel.status")
+        readout_then = readout.inner_text()
+        page.screenshot(path=str(results_dir / "rate_kernel_busy.png"))
+        page.evaluate("() => window.__busy")                       # the cell ends
+        deadline = time.monotonic() + 20
+        while readout.inner_text() == text and time.monotonic() < deadline:
+            time.sleep(0.1)
+        readout_after = readout.inner_text()
+    finally:
+        close_notebook(page)
+        page.close()
+    assert busy == "busy", "the kernel finished before the keys were tried: nothing shown"
+    changed = (np.abs(moved.astype(int) - before.astype(int)).max(axis=2) > 40).mean()
+    assert changed > 0.002, f"the robot did not move while the kernel was busy ({changed:.4%} of the pixels)"
+    assert readout_then == text                 # the readout is the kernel's: it waited
+    assert readout_after != text                # and came once the kernel was free
+
+
 def test_print_table(results_dir):
     """The side-by-side table of what this run measured (runs last in the module)."""
     rows = [(k, r) for k, r in _results.items() if "key_to_pixels_ms" in r]
