@@ -197,7 +197,7 @@ class LiveFigure:
     def settle(self) -> None:
         """Run what waited for the picture to stop moving (see :meth:`when_at_rest`)."""
         while self._at_rest:
-            _, action = self._at_rest.popitem()
+            _owner, action = self._at_rest.popitem()
             action()
 
     def redraw(self):
