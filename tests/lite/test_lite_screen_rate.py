@@ -115,6 +115,11 @@ def test_screen_rate_in_the_browser_edition(browser, base_url, site, measurement
         knob = handle.bounding_box()
         drag = frames_during(page, lambda: mouse_drag(page, (knob["x"] + knob["width"] / 2, y),
                                                       (track["x"] + track["width"] - 2, y), 2.0, back=True), 2.0)
+        settled(figure, pause=0.3)
+        box = figure.bounding_box()           # turning the 3D view (the image backend cannot)
+        center = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+        rotation = frames_during(page, lambda: mouse_drag(page, center, (center[0] + 160, center[1] + 40),
+                                                          2.0, back=True), 2.0)
         element = figure.evaluate("e => e.tagName")
     finally:
         context.close()
@@ -122,10 +127,14 @@ def test_screen_rate_in_the_browser_edition(browser, base_url, site, measurement
     key = stats(times)
     measurements[f"screen rate, {backend}, pixel ratio {ratio}: key -> changed pixels [ms]"] = key
     measurements[f"screen rate, {backend}, pixel ratio {ratio}: slider drag [frames/s]"] = drag["fps"]
+    measurements[f"screen rate, {backend}, pixel ratio {ratio}: rotation [frames/s]"] = rotation["fps"]
     measurements[f"screen rate, {backend}, pixel ratio {ratio}: figure element"] = element
-    print(f"\nbrowser edition, {backend}, pixel ratio {ratio}: key -> pixels {key}, drag {drag}")
+    print(f"\nbrowser edition, {backend}, pixel ratio {ratio}: key -> pixels {key}, drag {drag}, "
+          f"rotation {rotation}")
     assert sum(t is None for t in times) == 0, "a key press was never painted"
     assert all(p["changed_pixels"] > 0 for p in presses), "a key press left the figure's pixels unchanged"
     assert drag["frames"] > 0
     if THRESHOLDS:
         assert key["median"] <= 33 and key["p90"] <= 50 and drag["fps"] >= 30
+        if backend == "canvas":
+            assert rotation["fps"] >= 30
