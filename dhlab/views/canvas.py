@@ -13,6 +13,8 @@ frames a second. Here (an anywidget, its ES module ``canvas.js``):
 * when no pose has arrived for 150 ms, the browser asks for the **rest frame**: matplotlib
   draws the whole figure with Agg and sends it as a PNG, shown instead of the overlay. At rest
   the picture is exactly matplotlib's;
+* with a rig (:mod:`dhlab.views.rig`: a teach or spaces panel), the browser moves the robot
+  itself as soon as a joint slider moves, and the kernel's scene of that pose replaces it;
 * dragging a 3D axes turns it in the browser; on release the final (elev, azim) comes back
   here, the axes take that view and matplotlib redraws.
 
