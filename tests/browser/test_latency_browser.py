@@ -33,6 +33,7 @@ import numpy as np
 import pytest
 
 from labdriver import FIGURE_SELECTOR, NOTEBOOK_JS, close_notebook, open_notebook, run_all, settled, with_backend
+from screenrate import stats
 
 HERE = Path(__file__).parent
 PRESSES = 25
@@ -129,14 +130,6 @@ def execute(page, code: str) -> str:
         await future.done;
         return text;
     }}""", code)
-
-
-def stats(values) -> dict:
-    values = np.asarray([v for v in values if v is not None], dtype=float)
-    if not len(values):
-        return {"median": None, "p90": None, "n": 0}
-    return {"median": round(float(np.median(values)), 1), "p90": round(float(np.percentile(values, 90)), 1),
-            "n": int(len(values))}
 
 
 def measure(page, figure, handle) -> list:
