@@ -159,13 +159,8 @@ def _own_robot_text(text: str, robot, name: str) -> str:
         (r"a real six-joint arm", f"a real {word}-joint arm"),
         (r"configuration of the PUMA\s+robot\*\*", f"configuration of a robot**, here your own {name}"),
         (r"The PUMA 560 has \d+ revolute joints and \d+ links", f"Your {name} has {n} joints ({kinds}) and {n + 1} links"),
-        (r"(\$i = 1\s*…\s*)6(\$)", rf"\g<1>{n}\2"),
-        (r"(\$i = 1\s*…\s*)5(\$)", rf"\g<1>{n - 1}\2"),
         (r"\bfive words\b", f"{_WORDS.get(n - 1, str(n - 1))} words"),
         (r"\$z_6\$ along \$z_5\$, \$x_6\$", f"$z_{n}$ along $z_{{{n - 1}}}$, $x_{n}$"),
-        (r"T1 @ T2 @ T3 @ T4 @ T5 @ T6", " @ ".join(f"T{i}" for i in range(1, n + 1))),
-        (r"T1 … T6|T1…T6", f"T1…T{n}"),
-        (r"`T1` … `T6`", f"`T1` … `T{n}`"),
         (r"^q1, q2, q3, q4, q5, q6 = joint_variables\(6\)",
          ", ".join(f"q{i}" for i in range(1, n + 1)) + f" = joint_variables({n})"),
         (r"\bthe PUMA's\b", "your robot's"),
@@ -173,6 +168,23 @@ def _own_robot_text(text: str, robot, name: str) -> str:
         (r"\bThe PUMA( 560)?\b", f"Your {name}"),
         (r"\bPUMA 560\b", name),
     ]
+    return apply_rules(text, rules + formula_rules(n))
+
+
+def formula_rules(n: int) -> list:
+    """The rules of :func:`_own_robot_text` that read the same in every language: the joint
+    count in formulas and the names of the transformations T1…Tn."""
+    return [
+        (r"(\$i = 1\s*…\s*)6(\$)", rf"\g<1>{n}\2"),
+        (r"(\$i = 1\s*…\s*)5(\$)", rf"\g<1>{n - 1}\2"),
+        (r"T1 @ T2 @ T3 @ T4 @ T5 @ T6", " @ ".join(f"T{i}" for i in range(1, n + 1))),
+        (r"T1 … T6|T1…T6", f"T1…T{n}"),
+        (r"`T1` … `T6`", f"`T1` … `T{n}`"),
+    ]
+
+
+def apply_rules(text: str, rules) -> str:
+    """``text`` with each (pattern, replacement) rule applied in turn (multi-line patterns)."""
     for pattern, replacement in rules:
         text = re.sub(pattern, replacement, text, flags=re.M)
     return text

@@ -21,6 +21,7 @@ import contextlib
 import json
 import re
 
+from ..course.family_notebook import apply_rules, formula_rules
 from ..i18n import LANGUAGES, set_language
 from .language import _, checked_language, default_language  # noqa: F401  (part of this module's API)
 from . import variants as V
@@ -97,21 +98,14 @@ def own_robot_text_es(text: str, robot, name: str) -> str:
         (r"del robot PUMA\*\*", f"de un robot**, aquí su propio {name}"),
         (r"El PUMA 560 tiene \d+ articulaciones rotacionales y \d+ eslabones",
          f"Su {name} tiene {n} articulaciones ({kinds}) y {n + 1} eslabones"),
-        (r"(\$i = 1\s*…\s*)6(\$)", rf"\g<1>{n}\2"),
-        (r"(\$i = 1\s*…\s*)5(\$)", rf"\g<1>{n - 1}\2"),
         (r"\bcinco palabras\b", f"{_WORDS_ES.get(n - 1, n - 1)} palabras"),
         (r"\$z_6\$ a lo largo de \$z_5\$, \$x_6\$", f"$z_{n}$ a lo largo de $z_{{{n - 1}}}$, $x_{n}$"),
-        (r"T1 @ T2 @ T3 @ T4 @ T5 @ T6", " @ ".join(f"T{i}" for i in range(1, n + 1))),
-        (r"T1 … T6|T1…T6", f"T1…T{n}"),
-        (r"`T1` … `T6`", f"`T1` … `T{n}`"),
         (r"\bdel PUMA( 560)?\b", "de su robot"),
         (r"\bel PUMA( 560)?\b", "su robot"),
         (r"\bEl PUMA( 560)?\b", f"Su {name}"),
         (r"\bPUMA 560\b", name),
     ]
-    for pattern, replacement in rules:
-        text = re.sub(pattern, replacement, text, flags=re.M)
-    return text
+    return apply_rules(text, rules + formula_rules(n))
 
 
 def in_spanish(released: dict, template: dict, record: dict, notes: set) -> dict:
