@@ -32,6 +32,7 @@ process.stdin.on("end", () => {
   const jobs = JSON.parse(text);
   const out = jobs.map((job) => {
     if (job.nodes) return Array.from(m.chainNodes(job.steps, job.q));
+    if (job.covers) return m.coversAll(job.rig, Float32Array.from(job.rigData), job.items);
     const rigData = Float32Array.from(job.rigData), data = Float32Array.from(job.data, (v) => (v === null ? NaN : v));
     return Array.from(m.rigged(job.rig, rigData, job.items, data, job.q), (v) => (Number.isNaN(v) ? null : v));
   });
@@ -197,6 +198,79 @@ def test_a_pose_with_a_different_number_of_points_keeps_the_kernels_points():
     items[0]["points"] = [0, 3]
     got, = run_js([{"rig": rig, "rigData": rig_data, "items": items, "data": [9.0] * 9, "q": []}])
     assert got == [1, 1, 1, 2, 2, 2, 3, 3, 3]
+
+
+@needs_node
+def test_a_kernel_scene_is_repainted_ahead_only_if_the_rig_misses_a_point():
+    """While the browser is ahead of the kernel, a kernel scene that the rig covers whole would
+    repaint the same picture (not a new frame): rig.js's coversAll says when it does."""
+    jobs = []
+    for robot in (dhlab.robots.ssrms(), dhlab.robots.puma560()):
+        panel = dhlab.teach(robot, backend="canvas")
+        live = panel.view.live
+        content, numbers = live.rig.describe(live.moving)
+        items = scene(panel)[0]["items"]
+        jobs.append({"covers": True, "rig": content, "rigData": numbers.tolist(), "items": items})
+        panel.close()
+    rig = {"artists": {"0": [{"key": "points", "count": 2, "nodes": 0, "local": 2}]}}
+    line = {"kind": "line", "space": 0, "artist": 0, "points": [0, 2]}
+    jobs += [{"covers": True, "rig": rig, "rigData": nodes_, "items": items}
+             for nodes_, items in [([1, 2, 0, 0, 0, 0, 0, 0], [line]),            # whole
+                                   ([1, -1, 0, 0, 0, 0, 0, 0], [line]),           # one point the kernel's
+                                   ([1, -2, 0, 0, 0, 0, 0, 0], [line]),           # NaN padding: moves nothing
+                                   ([1, 2, 0, 0, 0, 0, 0, 0], [dict(line, points=[0, 3])]),   # other count
+                                   ([1, 2, 0, 0, 0, 0, 0, 0], [dict(line, artist=1)]),        # not rigged
+                                   ([1, 2, 0, 0, 0, 0, 0, 0], [dict(line, space=-1)])]]      # figure text
+    assert run_js(jobs) == [True, True, True, False, True, False, False, False]
+
+
+_SPACED = """
+import { spaceOut } from %s;
+// the message throttle of @jupyter-widgets/base's WidgetModel (ipywidgets 8), the part spaceOut uses:
+// one message in flight, later values merged into a buffer sent when the kernel says "idle"
+class Model {
+  constructor() { this._pending_msgs = 0; this._msg_buffer = null; this.sent = []; }
+  sync(state) {
+    if (this._pending_msgs >= 1) this._msg_buffer = { ...this._msg_buffer, ...state };
+    else this.send_sync_message(state);
+  }
+  send_sync_message(state) {
+    this.sent.push([performance.now(), state.value]);
+    setTimeout(() => this._handle_status({ content: { execution_state: "idle" } }), 5);   // a quick kernel
+    this._pending_msgs++;
+    return "msg-id";
+  }
+  _handle_status(msg) {
+    if (msg.content.execution_state !== "idle") return;
+    this._pending_msgs--;
+    if (this._msg_buffer !== null && this._pending_msgs < 1) {
+      const buffered = this._msg_buffer;
+      this._msg_buffer = null;
+      this.send_sync_message(buffered);
+    }
+  }
+}
+const plain = new Model(), spaced = new Model();
+spaceOut(spaced);
+spaceOut(spaced);                                  // linked twice (two views): spaced once
+let value = 0;
+const timer = setInterval(() => { value += 1; plain.sync({ value }); spaced.sync({ value }); }, 4);
+setTimeout(() => clearInterval(timer), 600);
+setTimeout(() => process.stdout.write(JSON.stringify({ plain: plain.sent, spaced: spaced.sent, last: value })), 1000);
+"""
+
+
+@needs_node
+def test_a_dragged_slider_tells_the_kernel_at_most_every_100_ms_and_always_its_last_value():
+    result = subprocess.run([NODE, "--input-type=module", "-e", _SPACED % json.dumps(RIG_JS.as_uri())],
+                            capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr[-2000:]
+    sent = json.loads(result.stdout)
+    times, values = np.array(sent["spaced"]).T
+    assert values[-1] == sent["last"] and sent["plain"][-1][1] == sent["last"]
+    assert np.diff(times).min() >= 95                       # a timer may fire a little early
+    assert len(sent["spaced"]) <= 8 < len(sent["plain"]) / 4
+    assert (np.diff(values) > 0).all()                      # merged, never out of order
 
 
 def sweep(panel, joint=1, steps=40):

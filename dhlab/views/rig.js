@@ -4,8 +4,9 @@
 // a round trip later. With the chain's kinematics program (the same steps dhlab.kinematics runs)
 // this module computes every node of the chain (world, then the running product after each
 // step), and moves each rigged point to node * local: the picture moves in the animation frame
-// of the slider. No DOM here: node imports this file and tests/test_canvas_js.py checks it
-// against Python (every catalogue robot, random poses).
+// of the slider; the sliders then need to tell the kernel less often (spaceOut). No DOM here:
+// node imports this file and tests/test_rig.py checks it against Python (every catalogue robot,
+// random poses).
 
 // node k as a row-major 4x4 in nodes[16k .. 16k+15]; node 0 is the world (identity)
 export function chainNodes(steps, q) {
@@ -84,6 +85,20 @@ export function rigged(rig, rigData, items, data, q) {
   return out;
 }
 
+// true if the rig moves every point of every item (no -1 node): a newer kernel scene of the same
+// items then changes nothing the browser shows while it is ahead of the kernel
+export function coversAll(rig, rigData, items) {
+  return items.every((item) => {
+    const key = KEYS[item.kind], where = item[key];
+    if (!key || !where || item.space < 0) return false;
+    const count = key === "faces" ? where[1] * where[2] : where[1];
+    const entry = (rig.artists[String(item.artist)] || []).find((e) => e.key === key && e.count === count);
+    if (!entry) return false;
+    for (let v = 0; v < count; v++) if (rigData[entry.nodes + v] === -1) return false;
+    return true;
+  });
+}
+
 function movePoints(out, at, rigData, entry, N) {
   for (let v = 0; v < entry.count; v++) {
     const node = rigData[entry.nodes + v];
@@ -94,4 +109,26 @@ function movePoints(out, at, rigData, entry, N) {
     out[p + 1] = N[T + 4] * x + N[T + 5] * y + N[T + 6] * z + N[T + 7];
     out[p + 2] = N[T + 8] * x + N[T + 9] * y + N[T + 10] * z + N[T + 11];
   }
+}
+
+const SLIDER_MESSAGE_MS = 100; // a linked slider tells the kernel at most this often
+
+// A slider being dragged changes on every mouse move; ipywidgets sends its value to the kernel
+// whenever no earlier one is still being handled, and each message costs the page a kernel status
+// round (busy, idle), the echo and the new readouts: on a 2-core machine that, not the painting,
+// is what slowed a drag. The picture follows the slider here (the rig), so the kernel needs fewer
+// values: after each message the slider's own throttle (ipywidgets' pending-message count) is held
+// SLIDER_MESSAGE_MS longer, and the values it merged meanwhile go out as one when the time is up
+// (the same call the kernel's "idle" makes), so the last value always reaches the kernel.
+export function spaceOut(slider) {
+  if (slider.__dhlabSpacedOut || typeof slider.send_sync_message !== "function"
+      || typeof slider._handle_status !== "function") return;   // another ipywidgets: left as it is
+  slider.__dhlabSpacedOut = true;
+  const send = slider.send_sync_message;
+  slider.send_sync_message = function (...args) {
+    const id = send.apply(this, args);
+    this._pending_msgs += 1;
+    setTimeout(() => this._handle_status({ content: { execution_state: "idle" } }), SLIDER_MESSAGE_MS);
+    return id;
+  };
 }

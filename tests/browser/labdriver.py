@@ -261,20 +261,38 @@ def _first_line(source: str) -> str:
 
 # --- panels and their pixels -------------------------------------------------------
 
-def panels(page) -> list:
+def panels(page, timeout: float = 20.0) -> list:
     """The outputs that hold an interactive panel: a slider and a figure in one
-    output. Returns ``(cell index, output locator)`` pairs."""
-    found = []
+    output. Returns ``(cell index, output locator)`` pairs.
+
+    A box widget draws its children after itself, one by one: the list is read
+    again until it holds still for a second and no output shows a slider
+    without its figure yet (under load a panel's picture can come seconds after
+    its slider), or ``timeout`` seconds have passed."""
+    script = """() => {
+      const found = [], waiting = [];
+      document.querySelectorAll('.jp-Notebook .jp-Cell').forEach((cell, i) => {
+        const ks = [];
+        cell.querySelectorAll('.jp-OutputArea-output').forEach((out, k) => {
+          const slider = out.querySelector('.widget-slider'), figure = out.querySelector(%r);
+          if (slider && figure) ks.push(k);
+          else if (slider) waiting.push(i);
+        });
+        if (ks.length) found.push([i, ks]);
+      });
+      return {found, waiting};
+    }""" % FIGURE_SELECTOR
+    deadline, last, since = time.monotonic() + timeout, None, time.monotonic()
+    while True:
+        seen = page.evaluate(script)
+        if seen != last:
+            last, since = seen, time.monotonic()
+        if (not seen["waiting"] and time.monotonic() - since >= 1.0) or time.monotonic() > deadline:
+            break
+        time.sleep(0.25)
     cells = page.locator(".jp-Notebook .jp-Cell")
-    indices = page.evaluate("""() => Array.from(document.querySelectorAll('.jp-Notebook .jp-Cell'))
-        .map((cell, i) => [i, Array.from(cell.querySelectorAll('.jp-OutputArea-output'))
-          .map((out, k) => (out.querySelector('.widget-slider') && out.querySelector(%r)) ? k : -1)
-          .filter(k => k >= 0)])
-        .filter(([i, ks]) => ks.length)""" % FIGURE_SELECTOR)
-    for i, outputs in indices:
-        for k in outputs:
-            found.append((i, cells.nth(i).locator(".jp-OutputArea-output").nth(k)))
-    return found
+    return [(i, cells.nth(i).locator(".jp-OutputArea-output").nth(k))
+            for i, outputs in last["found"] for k in outputs]
 
 
 def pixels(locator) -> np.ndarray:

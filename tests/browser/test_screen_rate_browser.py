@@ -9,7 +9,8 @@ pixel ratio 1 and 2 (Playwright's ``device_scale_factor``), on
   each after the figure settled; median and 90th percentile (ms), and every press must
   change the figure's pixels;
 * **slider drag**: the mouse drags joint 2's handle along its track and back for 2 s;
-  distinct frames of the figure per second (screenrate.py counts them);
+  distinct frames of the figure per second (screenrate.py counts them), the messages the page
+  sent the kernel meanwhile, and the kernel must end on the value the drag ended on;
 * **rotation**: the mouse drags across the 3D figure for 2 s: frames per second (the
   inline image cannot rotate: it shows none, which is recorded, not asserted);
 * **a panel that holds still**: the panel's bounding box, measured with joint 2 set to
@@ -116,6 +117,9 @@ def record(key: str, result: dict, results_dir: Path) -> None:
 def test_screen_rate(browser, lab_server, lab_root, results_dir, backend, ratio):
     skip_unless_available(backend)
     page = labdriver.open_lab(browser, lab_server, 1400, 1000, ratio)   # file browser open
+    sent = []                               # the page's messages to the kernel, while counting
+    page.on("websocket", lambda ws: ws.on("framesent", lambda _payload: sent.append(1) if counting else None))
+    counting = False
     try:
         output, figure = opened_panel(page, lab_root, backend)
         install(page)
@@ -126,9 +130,14 @@ def test_screen_rate(browser, lab_server, lab_root, results_dir, backend, ratio)
         y = track["y"] + track["height"] / 2
         knob = handle.bounding_box()
         start = (knob["x"] + knob["width"] / 2, y)
+        counting = True
         drag = frames_during(page, lambda: mouse_drag(page, start, (track["x"] + track["width"] - 2, y),
                                                       DRAG_SECONDS, back=True), DRAG_SECONDS)
+        counting = False
+        drag["messages_to_kernel"] = len(sent)
         settled(figure, pause=0.3)
+        dragged_to = float(handle.get_attribute("aria-valuenow") or "nan")
+        kernel_value = float(kernel(page, f"print(panel.sliders[{SLIDER}].value)"))
         box = figure.bounding_box()
         center = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
         rotation = frames_during(page, lambda: mouse_drag(page, center, (center[0] + 160, center[1] + 40),
@@ -151,7 +160,9 @@ def test_screen_rate(browser, lab_server, lab_root, results_dir, backend, ratio)
     assert all(p["changed_pixels"] > 0 for p in presses), "a key press left the figure's pixels unchanged"
     assert shown == pytest.approx(0.5 * PRESSES), "the slider did not take one step per key press"
     assert drag["frames"] > 0, "a slider drag painted no frame"
-    if backend == "canvas":
+    assert kernel_value == pytest.approx(dragged_to), "the kernel did not get the value the drag ended on"
+    if backend == "canvas":                 # the page spaces a dragged slider's messages (rig.js)
+        assert drag["messages_to_kernel"] <= 10 * drag["seconds"] + 5, drag
         for old in ("ipympl", "image"):
             before = _results.get(f"{old}@{ratio}x")
             if before and before["key_to_pixels_ms"]["median"] is not None:
