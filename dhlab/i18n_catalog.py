@@ -126,12 +126,19 @@ def _read(path: Path):
         return read_po(f, charset="utf-8")
 
 
-def _write_po(catalog, path: Path, **options) -> None:
+def po_text(catalog, **options) -> str:
+    """``catalog`` as the text of a PO file (Babel's ``write_po`` with ``options``), without the
+    header's ``Generated-By: Babel x.y`` line: a catalog must not change when only the Babel that
+    wrote it did (a fresh install gets the newest)."""
     from babel.messages.pofile import write_po
     buffer = io.BytesIO()
-    write_po(buffer, catalog, width=100, omit_header=False, **options)
+    write_po(buffer, catalog, omit_header=False, **options)
+    return re.sub(r'^"Generated-By: [^"\n]*"\n', "", buffer.getvalue().decode("utf-8"), flags=re.M)
+
+
+def _write_po(catalog, path: Path, **options) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_bytes(buffer.getvalue())
+    path.write_bytes(po_text(catalog, width=100, **options).encode("utf-8"))
 
 
 def extract() -> None:

@@ -293,6 +293,8 @@ def test_a_mixed_class_is_graded_in_one_run_each_in_its_language(graded):
         spanish = sid.startswith("es_")
         assert all((w in text) == spanish for w in SPANISH_WORDS), (sid, text)
         assert all((w in text) != spanish for w in ENGLISH_WORDS if w not in ("not answered", "you wrote")), (sid, text)
+        # the robot graded against, by its name: 'PUMA 560 · variante 3fa2c1' in Spanish
+        assert (" · variante " if spanish else " · variant ") in text and (" · variant " in text) != spanish, sid
     assert "Se calificaron 7 entregas" in proc.stderr and "Libro de calificaciones:" in proc.stderr
 
 

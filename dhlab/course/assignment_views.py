@@ -17,6 +17,7 @@ import numpy as np
 from ..grading import answers as _answers
 from ..grading import checks as _checks
 from ..grading import puma as _puma
+from ..grading.variants import shown_name
 from ..i18n import N_, _
 from ..validation import DHLabError
 
@@ -182,7 +183,7 @@ def robot_of(namespace):
         else:
             raise DHLabError(_("T{i} has no joint variable: write θ{i} = q{i} + (constant).").format(i=i))
         links.append(Link(first + [Move("x", row.a), Rot("x", alpha)], name=f"T{i}", qlim=qlim))
-    return Robot(links, name=_("your {robot}").format(robot=ref.name), unit="m")
+    return Robot(links, name=_("your {robot}").format(robot=shown_name(ref.name)), unit="m")
 
 
 def _within_a_turn(qlim) -> tuple:
@@ -258,7 +259,7 @@ def _my_robot_figure(robot, points, ref, q):
     for ax, pose, title in zip(axs, (np.zeros(ref.n), q), (_("home pose"), "q = " + _pose_text(q, ref.kinds))):
         R = ref.frames(pose[None])[0]
         ghost = _link_lines(R, [ref.local_points(k).tolist() for k in range(ref.n + 1)])
-        ax.plot(*ghost.T, "-", color="0.75", lw=6, label=_("the {robot}").format(robot=ref.name))
+        ax.plot(*ghost.T, "-", color="0.75", lw=6, label=_("the {robot}").format(robot=shown_name(ref.name)))
         F = robot.frames(pose)
         mine = _link_lines(F, points)
         if len(mine):

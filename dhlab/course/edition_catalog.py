@@ -16,8 +16,9 @@ import io
 from pathlib import Path
 
 from babel.messages.catalog import Catalog
-from babel.messages.pofile import denormalize, normalize, read_po, write_po
+from babel.messages.pofile import denormalize, normalize, read_po
 
+from ..i18n_catalog import po_text
 from ..validation import DHLabError
 from .edition_text import headings, placeholder_difference
 
@@ -85,9 +86,7 @@ def _previous_msgid(block: list[str]) -> str:
 def write_catalog(catalog: Catalog, path) -> None:
     """Write ``catalog`` as a PO file: no line wrapping; a fuzzy entry's previous English is kept
     above it in gettext's form (``#| msgid``), which Babel's writer would squeeze onto one line."""
-    buffer = io.BytesIO()
-    write_po(buffer, catalog, width=0, omit_header=False, include_previous=False)
-    text = buffer.getvalue().decode("utf-8")
+    text = po_text(catalog, width=0, include_previous=False)
     for message in catalog:
         if message.id and message.fuzzy and message.previous_id and message.context:
             head = f"\nmsgctxt {normalize(message.context, width=0)}\n"

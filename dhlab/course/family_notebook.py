@@ -118,7 +118,7 @@ def _intro(robot, record) -> str:
     return (_("## Your robot\n\nThis notebook is for **{who}**. Your robot is {robot}: "
               "{family} whose lengths, home pose, positive senses and mounting were changed for you, "
               "so its DH table is yours to work out — it is in no book. It has {n} joints ({joints}) and {mount}."
-              ).format(who=who, robot=_a(f"**{_variant_name(robot.name)}**"), family=_a(s.name), n=n, joints=joints,
+              ).format(who=who, robot=_a(f"**{V.shown_name(robot.name)}**"), family=_a(s.name), n=n, joints=joints,
                        mount=mount) + "\n\n" +
             _("The figure shows it in its **home pose** ($q_i = 0$ for every joint). Each joint axis is dashed; its "
               "black arrow is the axis's **positive direction**: a revolute joint turns by the right-hand rule about "
@@ -130,11 +130,6 @@ def _intro(robot, record) -> str:
             _("* **The joint variables** $q_i$ are measured from the home pose, positive as the arrows show.") + "\n" +
             _("* **Frame {n}**, the end effector's, has its origin at the end point in the axes table, and "
               "$z_{n}$ along joint {n}'s axis.").format(n=n) + six)
-
-
-def _variant_name(name: str) -> str:
-    """'UR5 · variant 49540b' in the notebook's language (the name the variant gives it)."""
-    return name.replace(" · variant ", _(" · variant "))
 
 
 def _a(name: str) -> str:

@@ -12,6 +12,7 @@ import html
 
 import numpy as np
 
+from ..grading.variants import shown_name
 from ..i18n import _
 
 __all__ = ["axes_figure", "axes_table", "points_table", "Table"]
@@ -62,7 +63,7 @@ def axes_table(robot) -> Table:
         rows.append((_("joint {i}").format(i=i), _("revolute") if kind == "R" else _("prismatic"), where,
                      _xyz(axis.direction)))
     rows.append((_("end effector"), "", f"{_end_name(robot)} = {_xyz(robot.end_point)}", ""))
-    return Table(_("{robot}: joint axes at the home pose (world frame 0, metres)").format(robot=robot.name),
+    return Table(_("{robot}: joint axes at the home pose (world frame 0, metres)").format(robot=shown_name(robot.name)),
                  (_("joint"), _("kind"), _("passes through"), _("positive direction")), rows)
 
 
@@ -79,7 +80,7 @@ def points_table(robot) -> Table:
     rows = [(f"{k} ({_(robot.link_names[k])})", name, _xyz(p))
             for k, link in enumerate(robot.points) for name, p in link]
     return Table(_("{robot}: link points at the home pose (world frame 0, metres): give them, in this "
-                   "order, in each link's own DH frame").format(robot=robot.name),
+                   "order, in each link's own DH frame").format(robot=shown_name(robot.name)),
                  (_("link"), _("point"), _("world (x, y, z)")), rows)
 
 
@@ -224,7 +225,7 @@ def axes_figure(robot, elev: float = 22, azim: float = -58, figsize=None):
         _cube(close, robot.end_point - half, robot.end_point + half, elev, azim)
         close.set_title(_("the wrist: axes J{first}…J{n}").format(first=joints[0] + 1, n=robot.n), fontsize=10)
     fig.suptitle(_("{robot}: joint axes J1…J{n} and their positive senses (right-hand rule)").format(
-        robot=robot.name, n=robot.n), fontsize=11)
+        robot=shown_name(robot.name), n=robot.n), fontsize=11)
     fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=4 if not wrist else 7, fontsize=8,
                frameon=False)
     fig.subplots_adjust(left=0.02, right=0.97, bottom=0.1, top=0.9, wspace=0.05)

@@ -35,6 +35,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import puma
+from . import variants as V
 from .language import N_, _, case_word
 from .answers import NOT_ANSWERED, Answers, Row, Unreadable
 from .part2 import link_items
@@ -128,7 +129,7 @@ class Report:
 
     def text(self) -> str:
         blocks = [_("{robot} assignment: {score}/{max_score} points").format(
-            robot=self.robot, score=_num(self.score), max_score=self.max_score)]
+            robot=V.shown_name(self.robot), score=_num(self.score), max_score=self.max_score)]
         blocks += [p.text() for p in self.parts]
         return "\n\n".join(blocks) + "\n"
 
@@ -251,7 +252,7 @@ def check_part3(answers: Answers, _analysis: Analysis | None = None, ref=None) -
         if all(match["axes"]) and match["end_effector"] and match["last_z"]:
             part.notes.append(_("Your T1…T{n} move like the {robot}: all {n} joint axes (as directed lines) and the "
                                 "end effector match at the home pose and {m} random configurations.").format(
-                n=ref.n, robot=ref.name, m=m - 1))
+                n=ref.n, robot=V.shown_name(ref.name), m=m - 1))
         else:                                       # cannot happen: the two checks disagree
             part.notes.append(_("(internal check failed: please report this answer to the course authors)"))
     return part

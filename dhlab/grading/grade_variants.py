@@ -232,7 +232,7 @@ def feedback_lines(info: VariantInfo | None) -> list:
     where = {"notebook": _("the variant signed for you in your notebook"),
              "roster": _("the variant your teacher released to you")}[info.source]
     lines = [_("Robot graded against: your {robot} ({id}), {where}.").format(
-        robot=robot.name, id=V.fingerprint(info.variant)[:ID_DIGITS], where=where)]
+        robot=V.shown_name(robot.name), id=V.fingerprint(info.variant)[:ID_DIGITS], where=where)]
     if info.status != "ok":
         lines.append(_("Variant check: {status} — {message}.").format(status=info.status, message=info.message))
     return lines + [""]

@@ -299,7 +299,9 @@ def feedback_text(submission: str, run: dict, report, status: str, robot_lines=(
         head = (_("How your notebook ran (cells counted from the top, code cells only):") if cells is not None
                 else _("How your notebook ran:"))
         lines += [head, *[f"  - {d}" for d in details], ""]
-    robot = (_("your {robot}").format(robot=report.robot) if report.robot != "PUMA 560" else _("the PUMA 560"))
+    from .variants import shown_name
+
+    robot = (_("your {robot}").format(robot=shown_name(report.robot)) if report.robot != "PUMA 560" else _("the PUMA 560"))
     lines.append(_("Your answers were read from the variables n_links, n_joints, joint_types, x_cases, link_points, "
                    "T1…T{n} and chain after your notebook ran, and checked by the grader against {robot}.").format(
         n=report.n, robot=robot))

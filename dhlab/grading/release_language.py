@@ -84,7 +84,7 @@ _WORDS_ES = {1: "una", 2: "dos", 3: "tres", 4: "cuatro", 5: "cinco", 6: "seis", 
 
 
 def _name_es(name: str) -> str:
-    return name.replace(" · variant ", " · variante ")
+    return name.replace(V.VARIANT_TAG, " · variante ")
 
 
 def own_robot_text_es(text: str, robot, name: str) -> str:

@@ -44,7 +44,8 @@ from ..course.family_model import AssignmentRobot, build
 from ..validation import DHLabError
 from .language import _
 
-__all__ = ["Variant", "variant", "table_digest", "student_variant", "roster_variants", "robot_of_variant", "fingerprint",
+__all__ = ["Variant", "variant", "table_digest", "student_variant", "roster_variants", "robot_of_variant", "shown_name",
+           "fingerprint",
            "canonical_json", "sign", "verify", "Verification", "STATUSES", "SCHEME", "METADATA_KEY",
            "load_secret", "new_secret", "MIN_SECRET_BYTES"]
 
@@ -214,12 +215,25 @@ def _sensible(v: Variant) -> bool:
     return bool(z.max() <= plate - CLEARANCE and above_floor)
 
 
+VARIANT_TAG = " · variant "     # between the family's name and the fingerprint of a variant's robot
+
+
+def shown_name(name: str) -> str:
+    """A variant robot's name as its reader's language writes it: the name itself stays English
+    (robots are cached and shared by threads grading in different languages).
+
+    >>> shown_name("UR5 · variant 49540b")
+    'UR5 · variant 49540b'
+    """
+    return name.replace(VARIANT_TAG, _(" · variant "))
+
+
 @functools.lru_cache(maxsize=512)
 def robot_of_variant(v: Variant) -> AssignmentRobot:
     """The assignment robot of variant ``v`` (its axes, points, reference solution), named
     with a short tag of its geometry. Cached: treat it as read-only."""
     robot = build(v.family, lengths=dict(v.lengths), home=list(v.home), senses=list(v.senses), base=dict(v.base))
-    robot.name = f"{family_spec(v.family).name} · variant {fingerprint(robot)[:6]}"
+    robot.name = f"{family_spec(v.family).name}{VARIANT_TAG}{fingerprint(robot)[:6]}"
     return robot
 
 
