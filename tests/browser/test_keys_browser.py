@@ -27,17 +27,26 @@ FIGURE = ".widget-image, .jupyter-matplotlib-canvas-container canvas"
 # widget: emulated here in the course's JupyterLab (4.6, which reads keys after the widgets), with a
 # shortcut on the slider's keys for any focused element of a notebook in command mode (what 4.4's
 # notebook, "next heading", and jupyterlab-slideshow, "next slide", bind).
+# The page is shared by the tier's later tests: the binding is removed again (UNBIND), or a plain
+# slider of a later notebook (the faulty-notebook self-test's) would lose its keys.
 GREEDY_BINDING = """() => {
   const app = window.jupyterapp;
   window.__dhlabTaken = 0;
   if (!app.commands.hasCommand('dhlab-test:take-key')) {
-    document.addEventListener('keydown', (event) => app.commands.processKeydownEvent(event), true);
-    app.commands.addCommand('dhlab-test:take-key', {execute: () => { window.__dhlabTaken += 1; }});
-    for (const key of ['ArrowRight', 'ArrowLeft', 'ArrowUp', 'ArrowDown', 'PageUp', 'PageDown', 'Home', 'End'])
-      app.commands.addKeyBinding({command: 'dhlab-test:take-key', keys: [key],
-                                  selector: '.jp-Notebook.jp-mod-commandMode :focus'});
+    const listener = (event) => app.commands.processKeydownEvent(event);
+    document.addEventListener('keydown', listener, true);
+    const undo = [() => document.removeEventListener('keydown', listener, true)];
+    const command = app.commands.addCommand('dhlab-test:take-key', {execute: () => { window.__dhlabTaken += 1; }});
+    undo.push(() => command.dispose());
+    for (const key of ['ArrowRight', 'ArrowLeft', 'ArrowUp', 'ArrowDown', 'PageUp', 'PageDown', 'Home', 'End']) {
+      const binding = app.commands.addKeyBinding({command: 'dhlab-test:take-key', keys: [key],
+                                                  selector: '.jp-Notebook.jp-mod-commandMode :focus'});
+      undo.push(() => binding.dispose());
+    }
+    window.__dhlabUnbind = () => { undo.forEach((f) => f()); window.__dhlabUnbind = null; };
   }
 }"""
+UNBIND = "() => { if (window.__dhlabUnbind) window.__dhlabUnbind(); }"
 
 ACTIVE_CELL = f"() => {labdriver.NOTEBOOK_JS}.content.activeCellIndex"
 
@@ -86,6 +95,7 @@ def test_a_clicked_slider_takes_its_keys_even_where_a_shortcut_wants_them(lab_pa
             assert image.evaluate("e => e.draggable") is False, "the figure's picture can be dragged"
             assert image.evaluate("e => getComputedStyle(e).webkitUserDrag") == "none"
     finally:
+        page.evaluate(UNBIND)
         close_notebook(page)
     assert taken == 0, f"a notebook shortcut took {taken} keys typed on the slider: {moves}"
     assert moves[0][2] == pytest.approx(low) and moves[-1][2] == pytest.approx(high), moves
