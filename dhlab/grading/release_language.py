@@ -23,7 +23,7 @@ import re
 
 from ..course.family_notebook import apply_rules, formula_rules
 from ..i18n import LANGUAGES, set_language
-from .language import _, checked_language, default_language  # noqa: F401  (part of this module's API)
+from .language import _, checked_language, default_language, speaking  # noqa: F401  (part of this module's API)
 from . import variants as V
 
 __all__ = ["LANGUAGE_COLUMNS", "checked_language", "roster_languages", "in_language", "spanish_texts",
@@ -84,7 +84,8 @@ _WORDS_ES = {1: "una", 2: "dos", 3: "tres", 4: "cuatro", 5: "cinco", 6: "seis", 
 
 
 def _name_es(name: str) -> str:
-    return name.replace(V.VARIANT_TAG, " · variante ")
+    with speaking("es"):                 # the catalog's word, whatever the teacher's language
+        return V.shown_name(name)
 
 
 def own_robot_text_es(text: str, robot, name: str) -> str:
