@@ -273,13 +273,25 @@ def test_a_dragged_slider_tells_the_kernel_at_most_every_100_ms_and_always_its_l
     assert (np.diff(values) > 0).all()                      # merged, never out of order
 
 
+@pytest.fixture
+def frozen_clock(monkeypatch):
+    """The live figure's clock stands still: every step of a sweep counts as one drag however slow
+    the machine (a loaded CI host once took longer than MOTION_S between two steps). A test moves
+    it by hand (``live._last_refresh -= 1.0``) to make a pause."""
+    from types import SimpleNamespace
+
+    from dhlab.views import livefigure
+
+    monkeypatch.setattr(livefigure, "time", SimpleNamespace(monotonic=lambda: 1000.0))
+
+
 def sweep(panel, joint=1, steps=40):
     s = panel.sliders[joint]
     for v in np.r_[np.linspace(s.value, s.max, steps), np.linspace(s.max, s.min, steps)]:
         s.value = round(float(v) * 2) / 2
 
 
-def test_a_drag_frames_the_robot_again_only_when_it_stops():
+def test_a_drag_frames_the_robot_again_only_when_it_stops(frozen_clock):
     """While a browser moves the picture, reframing (a full redraw, ~100 ms) waits for the rest."""
     from dhlab.views import framing
 
@@ -312,7 +324,7 @@ def test_without_a_browser_every_step_is_framed_at_once():
     np.testing.assert_allclose(np.asarray(limits[0], float), np.asarray(limits[1], float))
 
 
-def test_a_picture_asked_for_after_a_drag_is_framed():
+def test_a_picture_asked_for_after_a_drag_is_framed(frozen_clock):
     """png() (what a static output or a screenshot takes) frames the robot first."""
     from dhlab.views import framing
 
@@ -328,7 +340,7 @@ def test_a_picture_asked_for_after_a_drag_is_framed():
     assert not framing.needs_reframe(panel.view.ax, panel.view._framed_points())
 
 
-def test_while_dragged_the_labels_keep_their_place_and_rest_lays_them_out():
+def test_while_dragged_the_labels_keep_their_place_and_rest_lays_them_out(frozen_clock):
     """A step of a drag skips the labels' layout (half a step's cost): each label keeps its offset
     from its origin; the next step after a pause lays them out again."""
     panel = dhlab.teach(dhlab.robots.ssrms(), backend="canvas")
