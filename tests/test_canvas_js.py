@@ -166,3 +166,58 @@ def test_a_drag_turns_the_view_as_mplot3ds_azel_style():
     assert (elev, azim) == pytest.approx((30.0, -150.0))
     (elev, azim), = run_js([["dragView", camera, 0.0, -100.0, 400.0, 400.0]])   # up on the screen
     assert (elev, azim) == pytest.approx((30.0 - 45.0, -60.0))
+
+
+_BOUNDS = """
+import * as m from %s;
+import * as d from %s;
+let text = "";
+process.stdin.on("data", (c) => { text += c; });
+process.stdin.on("end", () => {
+  const out = JSON.parse(text).map(({ scene, data }) => {
+    const numbers = Float32Array.from(data, (v) => (v === null ? NaN : v));
+    const projected = m.projectItems(scene, numbers);
+    return d.paintedBounds(scene.items, projected, numbers, 1e6, 1e6);
+  });
+  process.stdout.write(JSON.stringify(out));
+});
+"""
+
+
+def test_a_repaint_clipped_to_the_items_bounds_misses_no_changed_pixel():
+    """dirty.js: while a slider moves, the browser repaints only the rectangle of the moving items
+    (before and after the step). Every pixel matplotlib changes by drawing the moving artists over
+    the background must lie in that rectangle: lines, markers, faces, letters, halos, leaders."""
+    cases, changed, where = [], [], []
+    for name, planar, view, poses in views():
+        for q in poses:
+            view.update(q)
+            live = view.live
+            live.png()
+            canvas = view.figure.canvas
+            canvas.draw()                        # the background: the moving artists are left out
+            background = np.asarray(canvas.buffer_rgba()).copy()
+            for artist in live.moving:
+                view.figure.draw_artist(artist)
+            picture = np.asarray(canvas.buffer_rgba())
+            rows, cols = np.nonzero((picture != background).any(axis=2))
+            if not len(rows):
+                continue
+            content, numbers = describe_scene(view.figure, live.moving)
+            cases.append({"scene": content, "data": _no_nan(numbers.astype(float).tolist())})
+            changed.append((cols.min(), rows.min(), cols.max() + 1, rows.max() + 1))
+            where.append(f"{name} {'2D' if planar else '3D'} q={np.round(q, 2).tolist()}")
+    script = _BOUNDS % (json.dumps(MODULE.as_uri()), json.dumps((MODULE.parent / "dirty.js").as_uri()))
+    result = subprocess.run([NODE, "--input-type=module", "-e", script], input=json.dumps(cases),
+                            capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr[-2000:]
+    boxes = json.loads(result.stdout)
+    assert len(boxes) == len(changed) > 20
+    areas = []
+    for box, pixels, label in zip(boxes, changed, where):
+        assert box is not None, label
+        x0, y0, x1, y1 = box
+        assert x0 <= pixels[0] and y0 <= pixels[1] and pixels[2] <= x1 and pixels[3] <= y1, \
+            f"{label}: changed pixels {pixels} outside the repainted {box}"
+        areas.append((x1 - x0) * (y1 - y0) / ((pixels[2] - pixels[0]) * (pixels[3] - pixels[1])))
+    assert np.median(areas) < 2.0              # and not the whole canvas either: a tight rectangle

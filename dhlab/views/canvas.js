@@ -10,6 +10,7 @@
 // The maths (viewMatrix, compose, project, depthOrder, dragView) uses no DOM, so node can
 // import this file and tests/test_canvas_js.py checks it against matplotlib.
 
+import { differsFromFullPaint, paintedBounds, union } from "./dirty.js";
 import { coversAll, rigged, sameQ, slidersQ, spaceOut } from "./rig.js";
 
 const REST_MS = 150;          // no new pose for this long: ask for the exact frame
@@ -228,14 +229,21 @@ function drawGlyphs(ctx, item, xy, data) {
 const PAINTERS = { line: drawLine, polys: drawPolys, glyphs: drawGlyphs };
 const IDENTITY = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1];
 
-// paint the scene's items; `P` overrides the matrix of some spaces (a view being turned)
-export function paintItems(ctx, scene, data, P = {}) {
-  for (const item of scene.items) {
+// the canvas pixels of every item's points; `P` overrides the matrix of some spaces (a view being turned)
+export function projectItems(scene, data, P = {}) {
+  return scene.items.map((item) => {
     const space = item.space;
     const matrix = space < 0 ? IDENTITY : (P[space] || scene.spaces[space].P);
     const where = item.kind === "line" ? item.points : item.kind === "polys" ?
       [item.faces[0], item.faces[1] * item.faces[2]] : item.anchors;
-    const xy = project(matrix, data, where[0], where[1]);
+    return project(matrix, data, where[0], where[1]);
+  });
+}
+
+// paint the scene's items (their points projected by projectItems)
+export function paintItems(ctx, scene, data, P = {}, projected = projectItems(scene, data, P)) {
+  for (const [i, item] of scene.items.entries()) {
+    const xy = projected[i];
     ctx.save();
     if (item.clip) {
       const [x0, y0, x1, y1] = item.clip;
@@ -312,25 +320,51 @@ function render({ model, el }) {
     const predicted = ahead();
     const image = state.turning || predicted || state.frameSeq < state.seq ? state.background : state.frame;
     if (image) fitSize(image.width, image.height);
-    ctx.setTransform(1, 0, 0, 1, 0, 0);
-    ctx.fillStyle = (state.scene && state.scene.face) || "white";
-    ctx.fillRect(0, 0, canvas.width, canvas.height);
-    if (image) ctx.drawImage(image, 0, 0);
-    if (image === state.frame || !state.scene) return;
-    const data = predicted ? rigged(state.rig, state.rigData, state.scene.items, state.data, state.qNow)
-      : state.data;
+    const face = (state.scene && state.scene.face) || "white";
+    const moving = image !== state.frame && state.scene;
+    const data = !moving ? null : predicted
+      ? rigged(state.rig, state.rigData, state.scene.items, state.data, state.qNow) : state.data;
     const P = {};
-    if (state.turning) {
+    if (moving && state.turning) {
       const t = state.turning, cam = state.scene.spaces[t.space];
       P[t.space] = compose(cam.A, viewMatrix(cam, t.elev, t.azim, cam.roll));
-      const [x0, y0, x1, y1] = cam.bbox;
-      ctx.fillStyle = state.scene.face || "white";
-      ctx.fillRect(x0, y0, x1 - x0, y1 - y0);
-      paintBox(ctx, cam, P[t.space]);
     }
-    paintItems(ctx, state.scene, data, P);
+    const projected = moving ? projectItems(state.scene, data, P) : null;
+    // over the same background, only what the last paint's items and these cover can change (dirty.js)
+    const bounds = moving && !state.turning ? paintedBounds(state.scene.items, projected, data,
+      canvas.width, canvas.height) : null;
+    const last = state.painted;
+    const dirty = image && bounds && last && last.bounds && last.image === image && last.face === face
+      && last.width === canvas.width && last.height === canvas.height ? union(last.bounds, bounds) : null;
+    state.painted = { image, face, bounds, width: canvas.width, height: canvas.height };
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.save();
+    const [x, y, w, h] = dirty ? [dirty[0], dirty[1], dirty[2] - dirty[0], dirty[3] - dirty[1]]
+      : [0, 0, canvas.width, canvas.height];
+    if (dirty) { ctx.beginPath(); ctx.rect(x, y, w, h); ctx.clip(); }
+    ctx.fillStyle = face;
+    ctx.fillRect(x, y, w, h);
+    if (image && w > 0 && h > 0) ctx.drawImage(image, x, y, w, h, x, y, w, h);
+    if (moving) {
+      if (state.turning) {
+        const cam = state.scene.spaces[state.turning.space];
+        const [x0, y0, x1, y1] = cam.bbox;
+        ctx.fillStyle = face;
+        ctx.fillRect(x0, y0, x1 - x0, y1 - y0);
+        paintBox(ctx, cam, P[state.turning.space]);
+      }
+      paintItems(ctx, state.scene, data, P, projected);
+    }
+    ctx.restore();
+    if (!moving) return;
+    if (dirty && trace.verify) {      // the browser tests: the clipped paint equals a full one
+      const wrong = differsFromFullPaint(ctx, image, face, (other) => paintItems(other, state.scene, data, {}, projected));
+      trace.dirtyChecked = (trace.dirtyChecked || 0) + 1;
+      trace.dirtyWrong = Math.max(trace.dirtyWrong || 0, wrong);
+    }
     trace.paintMs = performance.now() - started;
     trace.paints = (trace.paints || 0) + 1;
+    trace.paintedArea = (trace.paintedArea || 0) + (w * h) / (canvas.width * canvas.height);
     if (predicted) trace.predicted = (trace.predicted || 0) + 1;
   }
 

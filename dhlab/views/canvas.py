@@ -61,7 +61,7 @@ class CanvasWidget(anywidget.AnyWidget):
     pixels per CSS pixel, so that it is sharp on a HiDPI screen).
     """
 
-    _esm = _bundle("rig.js", "canvas.js")
+    _esm = _bundle("dirty.js", "rig.js", "canvas.js")
     background = traitlets.Bytes(b"").tag(sync=True)
     frame = traitlets.Bytes(b"").tag(sync=True)
     frame_seq = traitlets.Int(-1).tag(sync=True)

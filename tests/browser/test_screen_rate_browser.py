@@ -223,10 +223,13 @@ def test_the_robot_moves_while_the_kernel_runs_another_cell(browser, lab_server,
         page.wait_for_function(f"() => {NOTEBOOK_JS}.sessionContext.session.kernel.status === 'busy'")
         handle = output.locator(".widget-slider .noUi-handle").nth(SLIDER)
         handle.focus()
+        page.evaluate("() => { globalThis.__dhlabCanvas.verify = true; }")   # dirty.js, checked
         for _ in range(10):
             page.keyboard.press("ArrowRight")
         time.sleep(0.5)
         moved = settled(figure, pause=0.2)
+        checked, wrong = page.evaluate("() => { const t = globalThis.__dhlabCanvas; t.verify = false;"
+                                       " return [t.dirtyChecked || 0, t.dirtyWrong || 0]; }")
         busy = page.evaluate(f"() => {NOTEBOOK_JS}.sessionContext.session.kernel.status")
         readout_then = readout.inner_text()
         page.screenshot(path=str(results_dir / "rate_kernel_busy.png"))
@@ -242,6 +245,9 @@ def test_the_robot_moves_while_the_kernel_runs_another_cell(browser, lab_server,
     changed = (np.abs(moved.astype(int) - before.astype(int)).max(axis=2) > 40).mean()
     assert changed > 0.002, f"the robot did not move while the kernel was busy ({changed:.4%} of the pixels)"
     assert readout_then == text                 # the readout is the kernel's: it waited
+    # each step repainted only the rectangle of the robot before and after it (dirty.js): the canvas
+    # then held exactly what a full repaint would have
+    assert checked >= 5 and wrong == 0, f"{checked} clipped repaints, up to {wrong} pixels unlike a full one"
     assert readout_after != text                # and came once the kernel was free
 
 
