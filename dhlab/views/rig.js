@@ -111,15 +111,19 @@ function movePoints(out, at, rigData, entry, N) {
   }
 }
 
-const SLIDER_MESSAGE_MS = 100; // a linked slider tells the kernel at most this often
+export const SLIDER_MESSAGE_MS = 250;   // a linked slider tells the kernel at most this often
 
 // A slider being dragged changes on every mouse move; ipywidgets sends its value to the kernel
 // whenever no earlier one is still being handled, and each message costs the page a kernel status
-// round (busy, idle), the echo and the new readouts: on a 2-core machine that, not the painting,
-// is what slowed a drag. The picture follows the slider here (the rig), so the kernel needs fewer
-// values: after each message the slider's own throttle (ipywidgets' pending-message count) is held
-// SLIDER_MESSAGE_MS longer, and the values it merged meanwhile go out as one when the time is up
-// (the same call the kernel's "idle" makes), so the last value always reaches the kernel.
+// round (busy, idle: JupyterLab's toolbar then measures its items again and the tab's icon is
+// reloaded), the echo and the new readouts, ~60 ms of the page's main thread in all on the 2-core
+// machine: that, not the painting, is what slowed a drag (a 2-s drag in JupyterLab, 100 ms against
+// 250 ms in one run: 23-26 against 39-40 frames/s at pixel ratio 1, 20-23 against 27-35 at 2; the
+// readouts still change 4 times a second). The picture
+// follows the slider here (the rig), so the kernel needs fewer values: after each message the
+// slider's own throttle (ipywidgets' pending-message count) is held SLIDER_MESSAGE_MS longer, and
+// the values it merged meanwhile go out as one when the time is up (the same call the kernel's
+// "idle" makes), so the last value always reaches the kernel.
 export function spaceOut(slider) {
   if (slider.__dhlabSpacedOut || typeof slider.send_sync_message !== "function"
       || typeof slider._handle_status !== "function") return;   // another ipywidgets: left as it is
