@@ -168,8 +168,8 @@ def test_screen_rate(browser, lab_server, lab_root, results_dir, backend, ratio)
     assert drag["frames"] > 0, "a slider drag painted no frame"
     assert kernel_value == pytest.approx(dragged_to), "the kernel did not get the value the drag ended on"
     if backend == "canvas":                 # the page spaces a dragged slider's messages (rig.js)
-        per_second = 1000 / SLIDER_MESSAGE_MS
-        assert drag["messages_to_kernel"] <= per_second * drag["seconds"] + 5, drag
+        per_second = 1000 / SLIDER_MESSAGE_MS       # + the first value, the last, and room for noise
+        assert drag["messages_to_kernel"] <= per_second * drag["seconds"] + 8, drag
         for old in ("ipympl", "image"):
             before = _results.get(f"{old}@{ratio}x")
             if before and before["key_to_pixels_ms"]["median"] is not None:
