@@ -119,11 +119,11 @@ export const SLIDER_MESSAGE_MS = 250;   // a linked slider tells the kernel at m
 // reloaded), the echo and the new readouts, ~60 ms of the page's main thread in all on the 2-core
 // machine: that, not the painting, is what slowed a drag (a 2-s drag in JupyterLab, 100 ms against
 // 250 ms in one run: 23-26 against 39-40 frames/s at pixel ratio 1, 20-23 against 27-35 at 2; the
-// readouts still change 4 times a second). The picture
-// follows the slider here (the rig), so the kernel needs fewer values: after each message the
-// slider's own throttle (ipywidgets' pending-message count) is held SLIDER_MESSAGE_MS longer, and
-// the values it merged meanwhile go out as one when the time is up (the same call the kernel's
-// "idle" makes), so the last value always reaches the kernel.
+// readouts still change 4 times a second). The picture follows the slider here (the rig), so the
+// kernel needs fewer values: after each message the slider's own throttle (ipywidgets'
+// pending-message count) is held SLIDER_MESSAGE_MS longer, and the values it merged meanwhile go
+// out as one when the time is up (the same call the kernel's "idle" makes), so the last value
+// always reaches the kernel.
 export function spaceOut(slider) {
   if (slider.__dhlabSpacedOut || typeof slider.send_sync_message !== "function"
       || typeof slider._handle_status !== "function") return;   // another ipywidgets: left as it is
