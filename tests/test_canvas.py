@@ -292,3 +292,52 @@ def test_faces_as_matplotlib_3_8_keeps_them():
     assert np.isnan(faces[0, 3]).all()
     with pytest.raises(Unsupported):                 # neither layout: a full frame, not a crash
         faces3d(SimpleNamespace())
+
+
+# --- a page that shows widgets but cannot run canvas.js (anywidget's front end missing) ---------
+def _in_a_kernel_loop(monkeypatch, front_end: bool, say_loaded: bool):
+    """Make a canvas panel inside a running event loop (as in a kernel), in a cell run from a
+    notebook page (the request names the cell) or not, the page saying "loaded" or not; wait as a
+    kernel would between cells. Returns the panel and its first figure widget."""
+    import asyncio
+
+    from dhlab.views import canvas
+
+    monkeypatch.setattr(canvas, "_WATCH_S", 0.01)
+    monkeypatch.setattr(canvas, "FRONT_END_S", 0.04)
+    monkeypatch.setattr(livefigure, "_current_cell", lambda: ("cell-1", 1) if front_end else None)
+
+    async def scenario():
+        panel, widget, _browser = canvas_panel()
+        if say_loaded:
+            widget._on_browser_message(widget, {"kind": "loaded"}, [])
+        await asyncio.sleep(0.3)
+        return panel, widget
+
+    return asyncio.run(scenario())
+
+
+def test_a_page_that_cannot_run_the_module_gets_png_frames_in_the_same_place(monkeypatch):
+    import ipywidgets
+
+    panel, canvas_widget = _in_a_kernel_loop(monkeypatch, front_end=True, say_loaded=False)
+    live = panel.view.live
+    figure = panel.children[0]
+    assert live.backend == "image" and isinstance(figure, ipywidgets.Image)
+    assert canvas_widget not in panel.children and "dhlab-figure" in figure._dom_classes
+    assert not any(type(w).__name__ == "SliderKeys" for w in panel.children[1].children)
+    assert np.array_equal(pixels(figure.value), savefig_pixels(panel.figure))
+    panel.sliders[1].value += 30                     # the PNG follows the sliders
+    assert np.array_equal(pixels(figure.value), savefig_pixels(panel.figure))
+    assert canvas_widget.comm is None                # the canvas widget is closed
+
+
+@pytest.mark.parametrize("front_end, say_loaded", [(True, True), (False, False)])
+def test_the_canvas_stays_where_the_page_runs_it_or_no_page_is_there(monkeypatch, front_end, say_loaded):
+    panel, canvas_widget = _in_a_kernel_loop(monkeypatch, front_end, say_loaded)
+    assert panel.view.live.backend == "canvas" and panel.children[0] is canvas_widget
+
+
+def test_outside_an_event_loop_nothing_is_watched():
+    panel, widget, _browser = canvas_panel()          # a script or a test: no kernel loop
+    assert panel.view.live.backend == "canvas" and panel.children[0] is widget

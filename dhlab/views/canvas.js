@@ -503,4 +503,12 @@ function render({ model, el }) {
   return () => { clearTimeout(state.timer); unlinkSliders(); };
 }
 
-export default { render };
+// runs once per widget, when the page creates its model (before any view: a notebook renders an
+// output only when it is scrolled to): the kernel hears that this module runs here. A page that
+// cannot run it (anywidget's front end missing) stays silent, and the kernel then sends PNG frames
+// instead (dhlab/views/canvas.py, watch_front_end).
+function initialize({ model }) {
+  model.send({ kind: "loaded" });
+}
+
+export default { initialize, render };

@@ -16,7 +16,10 @@ frames a second. Here (an anywidget, its ES module ``canvas.js``):
 * with a rig (:mod:`dhlab.views.rig`: a teach or spaces panel), the browser moves the robot
   itself as soon as a joint slider moves, and the kernel's scene of that pose replaces it;
 * dragging a 3D axes turns it in the browser; on release the final (elev, azim) comes back
-  here, the axes take that view and matplotlib redraws.
+  here, the axes take that view and matplotlib redraws;
+* a notebook page that cannot run ``canvas.js`` (anywidget's front end is not installed where
+  JupyterLab runs) never says "loaded": after :data:`FRONT_END_S` the figure falls back to PNG
+  frames (the "image" backend) in the same place (:func:`watch_front_end`).
 
 An artist the browser cannot paint (see :class:`~dhlab.views.scene.Unsupported`) makes that
 figure send a full matplotlib frame at every step instead (the old cost, never a wrong
@@ -24,6 +27,7 @@ picture). Without a browser (nbval, scripts) nothing waits for one: the messages
 """
 from __future__ import annotations
 
+import asyncio
 import math
 import weakref
 from pathlib import Path
@@ -37,6 +41,8 @@ __all__ = ["CanvasWidget", "make_widget", "send_scene", "send_rig", "send_rest",
            "MIN_RATIO", "MAX_RATIO"]
 
 MIN_RATIO, MAX_RATIO = 1.0, 3.0        # pixel ratios rendered (a 4K laptop reports 2 to 2.5)
+FRONT_END_S = 4           # a notebook page that has not run canvas.js this long: PNG frames instead
+_WATCH_S = 1.0            # how often the kernel looks (between cells: it runs on the kernel's event loop)
 
 
 def _bundle(*names) -> str:
@@ -72,6 +78,7 @@ class CanvasWidget(anywidget.AnyWidget):
         super().__init__(**kwargs)
         self._live = weakref.ref(live)          # the figure must not live on because of its widget
         self.shown = False                      # a browser shows it (it said "ready")
+        self.loaded = False                     # a browser runs canvas.js (it said "loaded")
         self.on_msg(self._on_browser_message)
         self.observe(self._on_ratio, names="pixel_ratio")
 
@@ -81,6 +88,8 @@ class CanvasWidget(anywidget.AnyWidget):
         if live is None or not isinstance(content, dict):
             return
         kind = content.get("kind")
+        if kind in ("loaded", "ready"):
+            self.loaded = True
         if kind == "ready":
             self.shown = True
             send_rig(live)
@@ -121,7 +130,38 @@ def make_widget(live) -> CanvasWidget:
         widget.background = _background_png(live)
     live._current_agg()
     widget.show_frame(live._encode(), live._seq)
+    watch_front_end(live)
     return widget
+
+
+def watch_front_end(live) -> None:
+    """Fall back to PNG frames if the notebook page that ran this cell cannot run canvas.js.
+
+    A page with anywidget's front end runs ``initialize`` of canvas.js, which says "loaded", as
+    soon as it creates the widget (before showing it). A cell run from a notebook page (JupyterLab,
+    Notebook 7, the browser edition: its request names the cell) whose widget has not said so
+    after :data:`FRONT_END_S` gets ``live.fall_back_to_image()``. The kernel looks only between
+    cells, every :data:`_WATCH_S`, so a message queued behind a long cell is read first. Run by
+    nbval, a grader, Voila (no cell named) or outside a kernel's event loop: nothing is watched."""
+    from .livefigure import _current_cell
+
+    try:
+        loop = asyncio.get_running_loop()
+    except RuntimeError:
+        return
+    if _current_cell() is None:
+        return
+    widget = live._canvas
+
+    def check(looks: int) -> None:
+        if live._canvas is not widget or widget.loaded:
+            return
+        if looks * _WATCH_S >= FRONT_END_S:
+            live.fall_back_to_image()
+        else:
+            loop.call_later(_WATCH_S, check, looks + 1)
+
+    loop.call_later(_WATCH_S, check, 1)
 
 
 def css_size(live) -> list:

@@ -149,6 +149,7 @@ class LiveFigure:
         self._moving = []
         self._background = None
         self._image = None           # the Image widget of the inline path, made on demand
+        self._new_widget_callbacks = []   # see on_new_widget
         self._refreshes = 0
         self.figure.canvas.mpl_connect("draw_event", self._on_full_draw)
 
@@ -244,6 +245,27 @@ class LiveFigure:
                 self.figure.canvas.draw()
             self._publish()
         return self._image
+
+    def on_new_widget(self, callback) -> None:
+        """Call ``callback(old, new)`` when :meth:`fall_back_to_image` replaces the figure's widget
+        (a panel puts the new one where the old one was). Held weakly if it is a bound method."""
+        self._new_widget_callbacks.append(weakref.WeakMethod(callback) if hasattr(callback, "__self__")
+                                          else (lambda: callback))
+
+    def fall_back_to_image(self) -> None:
+        """Show PNG frames (the "image" backend) instead of the canvas backend's widget, whose
+        module the page cannot run (see :func:`dhlab.views.canvas.watch_front_end`)."""
+        if self.backend != "canvas" or self._canvas is None:
+            return
+        old, self._canvas = self._canvas, None
+        self.backend = "image"
+        self.dragged = False
+        new = self.widget                       # the Image, with the current picture
+        for ref in self._new_widget_callbacks:
+            callback = ref()
+            if callback is not None:
+                callback(old, new)
+        old.close()
 
     def _publish(self):
         if self._image is not None:

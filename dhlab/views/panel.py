@@ -239,14 +239,21 @@ class Panel(widgets.HBox):
                             layout=widgets.Layout(margin="0.5em 0 0 0" if below else "0 0 0 1em",
                                                   width=None if below else control_width(SIDE_PX),
                                                   flex=None if below else "0 0 auto"))
-        # the figure keeps its size: a flex row may otherwise shrink the canvas, which then shows
-        # only part of the picture (its left side cut, as seen in a narrow browser column)
-        live.widget.layout.flex = "0 0 auto"
-        live.widget.add_class(FIGURE_CLASS)      # its picture is not dragged away (keys.py)
+        self._side, self._keys = side, keys
+        _as_figure(live.widget)
         super().__init__([live.widget, side],
                          layout=widgets.Layout(flex_flow="column" if below else "row wrap",
                                                align_items="flex-start"))
+        live.on_new_widget(self._figure_replaced)
         forget_previous_run(self)
+
+    def _figure_replaced(self, old, new) -> None:
+        # the page cannot run the canvas backend's module (LiveFigure.fall_back_to_image): the PNG
+        # figure takes its place, and the keys widget (the same front end) leaves the controls
+        _as_figure(new)
+        self.children = tuple(new if child is old else child for child in self.children)
+        if self._keys is not None:
+            self._side.children = tuple(c for c in self._side.children if c is not self._keys)
 
     def run(self, action, *args):
         """``action(*args)``, with any error shown in the panel (then raised)."""
@@ -293,6 +300,13 @@ class Panel(widgets.HBox):
 
             bundle["image/png"] = base64.b64encode(self.live.png()).decode("ascii")
         return bundle
+
+
+def _as_figure(widget) -> None:
+    # the figure keeps its size: a flex row may otherwise shrink the canvas, which then shows
+    # only part of the picture (its left side cut, as seen in a narrow browser column)
+    widget.layout.flex = "0 0 auto"
+    widget.add_class(FIGURE_CLASS)      # its picture is not dragged away (keys.py)
 
 
 def _descendants(widget):
