@@ -326,6 +326,7 @@ def test_a_page_that_cannot_run_the_module_gets_png_frames_in_the_same_place(mon
     assert live.backend == "image" and isinstance(figure, ipywidgets.Image)
     assert canvas_widget not in panel.children and "dhlab-figure" in figure._dom_classes
     assert not any(type(w).__name__ == "SliderKeys" for w in panel.children[1].children)
+    assert panel._keys is None                       # the keys widget (its front end is missing) closed
     assert np.array_equal(pixels(figure.value), savefig_pixels(panel.figure))
     panel.sliders[1].value += 30                     # the PNG follows the sliders
     assert np.array_equal(pixels(figure.value), savefig_pixels(panel.figure))

@@ -254,6 +254,8 @@ class Panel(widgets.HBox):
         self.children = tuple(new if child is old else child for child in self.children)
         if self._keys is not None:
             self._side.children = tuple(c for c in self._side.children if c is not self._keys)
+            self._keys.close()
+            self._keys = None
 
     def run(self, action, *args):
         """``action(*args)``, with any error shown in the panel (then raised)."""
