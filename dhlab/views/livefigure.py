@@ -246,11 +246,10 @@ class LiveFigure:
             self._publish()
         return self._image
 
-    def on_new_widget(self, callback) -> None:
-        """Call ``callback(old, new)`` when :meth:`fall_back_to_image` replaces the figure's widget
-        (a panel puts the new one where the old one was). Held weakly if it is a bound method."""
-        self._new_widget_callbacks.append(weakref.WeakMethod(callback) if hasattr(callback, "__self__")
-                                          else (lambda: callback))
+    def on_new_widget(self, method) -> None:
+        """Call the bound ``method(old, new)`` when :meth:`fall_back_to_image` replaces the figure's
+        widget (a panel puts the new one where the old one was); held weakly."""
+        self._new_widget_callbacks.append(weakref.WeakMethod(method))
 
     def fall_back_to_image(self) -> None:
         """Show PNG frames (the "image" backend) instead of the canvas backend's widget, whose
@@ -259,7 +258,6 @@ class LiveFigure:
             return
         old, self._canvas = self._canvas, None
         self.backend = "image"
-        self.dragged = False
         new = self.widget                       # the Image, with the current picture
         for ref in self._new_widget_callbacks:
             callback = ref()
