@@ -128,6 +128,9 @@ def test_screen_rate(browser, lab_server, lab_root, results_dir, backend, ratio)
     counting = False
     try:
         output, figure = opened_panel(page, lab_root, backend)
+        if backend == "canvas":             # the low-latency canvas (canvas.js): faster full repaints
+            attributes = figure.evaluate("(c) => c.getContext('2d').getContextAttributes()")
+            assert attributes.get("desynchronized") is True and attributes.get("alpha") is False, attributes
         install(page)
         handle = output.locator(".widget-slider .noUi-handle").nth(SLIDER)
         presses = key_presses(page, handle, lambda: settled(figure, pause=0.15), PRESSES)
