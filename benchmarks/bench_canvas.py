@@ -9,7 +9,8 @@ readouts and matrix too), then the canvas' rest frame (Agg + PNG, once the figur
 "canvas, dragged" is the canvas backend shown in a browser while a slider is dragged (steps
 closer than 0.3 s: frame labels keep their place, see dhlab/views/scene.py). Then a sweep of
 joint 2 across its range and back (the robot leaves its frame: the PNG backends frame it again
-at once, a full redraw; a dragged canvas when the drag stops, see dhlab/views/rig.py): total ms.
+at once, a full redraw; a dragged canvas at most once a second and when the drag stops, see
+dhlab/views/livefigure.py, REDRAW_EVERY_S): total ms.
 The browser's share (decode/paint) is measured by the browser tier (tests/browser).
 """
 from __future__ import annotations

@@ -293,25 +293,57 @@ def sweep(panel, joint=1, steps=40):
         s.value = round(float(v) * 2) / 2
 
 
-def test_a_drag_frames_the_robot_again_only_when_it_stops(frozen_clock):
-    """While a browser moves the picture, reframing (a full redraw, ~100 ms) waits for the rest."""
+def test_a_drag_frames_a_leaving_robot_again_at_most_once_a_second(monkeypatch):
+    """While a browser moves the picture, a robot leaving the picture is framed again (a full redraw,
+    ~35-55 ms) at most every REDRAW_EVERY_S (1 s): it never stays out of sight longer, and the kernel keeps
+    up with the drag; the rest (a robot grown small in its frame) waits, and at rest the view is framed."""
+    from types import SimpleNamespace
+
+    from dhlab.views import framing, livefigure
+
+    clock = [1000.0]
+    monkeypatch.setattr(livefigure, "time", SimpleNamespace(monotonic=lambda: clock[0]))
+    panel = dhlab.teach(dhlab.robots.ssrms(), backend="canvas")
+    live = panel.view.live
+    widget = live.widget
+    widget.send = lambda content, buffers=None: None
+    widget._on_browser_message(widget, {"kind": "ready"}, [])
+    redraws, out_of_frame = [], []
+    widget.observe(lambda change: redraws.append(clock[0]), names="background")
+    s = panel.sliders[1]
+    for v in np.r_[np.linspace(s.value, s.max, 40), np.linspace(s.max, s.min, 40)]:
+        clock[0] += 0.1                                          # a step every 0.1 s: one drag
+        s.value = round(float(v) * 2) / 2
+        out_of_frame.append(framing.leaves_view(panel.view.ax, panel.view._framed_points()))
+    redraws = sorted(set(redraws))                  # a frame whose labels stick out draws twice at once
+    assert len(redraws) >= 2, "the view was never framed again during the sweep"
+    assert min(np.diff(redraws)) >= livefigure.REDRAW_EVERY_S - 1e-9, redraws
+    longest = max((len(run) for run in "".join("x" if o else "." for o in out_of_frame).split(".")), default=0)
+    assert longest * 0.1 <= livefigure.REDRAW_EVERY_S + 1e-9, f"out of frame for {longest} steps in a row"
+    clock[0] += 1.0
+    widget._on_browser_message(widget, {"kind": "rest", "seq": live._seq}, [])
+    assert not live._at_rest and not framing.needs_reframe(panel.view.ax, panel.view._framed_points())
+    widget._on_browser_message(widget, {"kind": "rest", "seq": live._seq}, [])
+    assert widget.frame_seq == live._seq                     # then the exact frame
+
+
+def test_a_drag_that_was_just_framed_waits_for_the_rest(frozen_clock):
+    """With the clock standing still (every step within REDRAW_EVERY_S of the last redraw), a view
+    that needs framing again leaves it to the rest; the rest frames it."""
     from dhlab.views import framing
 
     panel = dhlab.teach(dhlab.robots.ssrms(), backend="canvas")
     live = panel.view.live
     widget = live.widget
-    sent = []
-    widget.send = lambda content, buffers=None: sent.append(content)
+    widget.send = lambda content, buffers=None: None
     widget._on_browser_message(widget, {"kind": "ready"}, [])
-    backgrounds = []
-    widget.observe(lambda change: backgrounds.append(1), names="background")
+    redraws, redraw = [], live.redraw
+    live.redraw = lambda: (redraws.append(1), redraw())
     sweep(panel)
-    assert backgrounds == [] and live._at_rest               # no redraw while moving, one waiting
+    assert len(redraws) <= 1 and live._at_rest              # at most one redraw while moving, one waiting
     widget._on_browser_message(widget, {"kind": "rest", "seq": live._seq}, [])
-    assert not live._at_rest and backgrounds                 # framed again (its layout may draw twice)
+    assert not live._at_rest
     assert not framing.needs_reframe(panel.view.ax, panel.view._framed_points())
-    widget._on_browser_message(widget, {"kind": "rest", "seq": live._seq}, [])
-    assert widget.frame_seq == live._seq                     # then the exact frame
 
 
 def test_without_a_browser_every_step_is_framed_at_once():

@@ -383,6 +383,13 @@ function render({ model, el }) {
   model.on("msg:custom", (msg, buffers) => {
     if (msg.kind === "rig") { linkSliders(msg, floats(buffers[0])); return; }
     if (msg.kind !== "scene") return;
+    // a scene sent after a new background (the robot framed again) is drawn over that background,
+    // never over the old one: it waits while the picture decodes (messages arrive in order)
+    if (state.loadingBackground) { state.waiting = [msg, buffers]; return; }
+    onScene(msg, buffers);
+  });
+
+  function onScene(msg, buffers) {
     trace.sceneAt = performance.now();
     trace.scenes += 1;
     state.scene = msg;
@@ -402,13 +409,24 @@ function render({ model, el }) {
     }
     if (!state.turning || state.turning.done) askForRest();
     if (!state.turning) schedule();
-  });
+  }
 
   async function onBackground() {
+    const ticket = (state.backgroundTicket = (state.backgroundTicket || 0) + 1);
     state.loadingBackground = true;
-    state.background = await bitmap(model.get("background"));
+    let image = null;
+    try {
+      image = await bitmap(model.get("background"));
+    } catch (error) {                                     // not a picture: paint on the face colour
+      image = null;
+    }
+    if (ticket !== state.backgroundTicket) return;        // a newer background is on its way
+    state.background = image;
     state.loadingBackground = false;
     if (state.turning && state.turning.done) state.turning = null;
+    const waiting = state.waiting;
+    state.waiting = null;
+    if (waiting) onScene(...waiting);
     schedule();
   }
 

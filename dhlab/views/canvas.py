@@ -33,6 +33,7 @@ import weakref
 from pathlib import Path
 
 import anywidget
+import numpy as np
 import traitlets
 
 from .scene import Unsupported, css_color, describe_scene
@@ -127,7 +128,7 @@ def make_widget(live) -> CanvasWidget:
     if live._background is None:
         live.figure.canvas.draw()          # the draw_event handler sends the background
     else:
-        widget.background = _background_png(live)
+        widget.background = background_png(live)
     live._current_agg()
     widget.show_frame(live._encode(), live._seq)
     watch_front_end(live)
@@ -170,10 +171,21 @@ def css_size(live) -> list:
     return [round(v / ratio) for v in live.figure.canvas.get_width_height()]
 
 
-def _background_png(live) -> bytes:
-    live.figure.canvas.restore_region(live._background)
+def background_png(live) -> bytes:
+    """The figure without its moving artists (its cached background), as PNG bytes; the Agg
+    buffer keeps what it holds (the moving artists too, if it had them)."""
+    from .livefigure import _PNG_WITH_ALPHA, encode_png
+
+    try:
+        pixels = np.asarray(live._background)          # the region's own pixels (matplotlib >= 3.8)
+    except (TypeError, ValueError):
+        pixels = None
+    if pixels is not None and pixels.shape == np.asarray(live.figure.canvas.buffer_rgba()).shape:
+        return encode_png(pixels, alpha=_PNG_WITH_ALPHA)
+    live.figure.canvas.restore_region(live._background)      # an older matplotlib: via the buffer
     png = live._encode()
-    live._agg_stale = True
+    live._paint_moving()
+    live._agg_stale = False
     return png
 
 

@@ -34,7 +34,8 @@ import matplotlib
 import numpy as np
 from mpl_toolkits.mplot3d import proj3d
 
-__all__ = ["frame_box", "projected", "extent_fraction", "fit_zoom", "needs_reframe", "back_home", "axes_limits",
+__all__ = ["frame_box", "projected", "extent_fraction", "fit_zoom", "needs_reframe", "leaves_view", "back_home",
+           "axes_limits",
            "zoom_in_on",
            "center_on", "box_corners", "PANE_MARGIN",
            "REFRAME_BELOW", "TARGET", "MIN_SIDE", "SLACK"]
@@ -107,17 +108,27 @@ def fit_zoom(ax, zoom: float = 1.0, fill: float = BOX_FILL) -> float:
 
 def needs_reframe(ax, points, M=None, below: float = REFRAME_BELOW, edge: float = EDGE) -> bool:
     """True when a point is drawn within ``edge`` (a fraction of the axes' size) of the
-    axes' border or beyond, or the points span less than ``below`` of the axes, or the
-    points are back at a pose a frame was made at while the current frame was made
-    elsewhere (:func:`back_home`)."""
+    axes' border or beyond (:func:`leaves_view`), or the points span less than ``below`` of
+    the axes, or the points are back at a pose a frame was made at while the current frame
+    was made elsewhere (:func:`back_home`)."""
     pixels = projected(ax, points, M)
     box = ax.bbox
-    mx, my = edge * box.width, edge * box.height
-    near_edge = (np.any(pixels[:, 0] < box.x0 + mx) or np.any(pixels[:, 0] > box.x1 - mx)
-                 or np.any(pixels[:, 1] < box.y0 + my) or np.any(pixels[:, 1] > box.y1 - my))
     span = pixels.max(axis=0) - pixels.min(axis=0)
     home = back_home(ax, points)           # always called: it also notes the frames made
-    return bool(near_edge) or max(span[0] / box.width, span[1] / box.height) < below or home
+    return _near_edge(box, pixels, edge) or max(span[0] / box.width, span[1] / box.height) < below or home
+
+
+def leaves_view(ax, points, M=None, edge: float = EDGE) -> bool:
+    """True when a point is drawn within ``edge`` (a fraction of the axes' size) of the
+    axes' border or beyond: the robot is leaving the picture (the one reason to frame it
+    again while a slider is still being dragged)."""
+    return _near_edge(ax.bbox, projected(ax, points, M), edge)
+
+
+def _near_edge(box, pixels, edge) -> bool:
+    mx, my = edge * box.width, edge * box.height
+    return bool(np.any(pixels[:, 0] < box.x0 + mx) or np.any(pixels[:, 0] > box.x1 - mx)
+                or np.any(pixels[:, 1] < box.y0 + my) or np.any(pixels[:, 1] > box.y1 - my))
 
 
 def back_home(ax, points) -> bool:

@@ -65,6 +65,11 @@ _FULL_FRAME_EVERY = 30
 # refreshes closer than this (seconds) are a slider being dragged (LiveFigure.in_motion)
 MOTION_S = 0.3
 
+# while a slider is dragged, a full redraw (framing a robot that leaves the picture: ~35 ms of kernel,
+# 55 at pixel ratio 2, and a new background for the page) at most this often (seconds): a 2-s drag at
+# pixel ratio 2 kept its 46-49 frames/s at 1 s, and lost a tenth of them at 0.5 s (LiveFigure.may_redraw)
+REDRAW_EVERY_S = 1.0
+
 # In the browser edition (Pyodide: sys.platform "emscripten"), dropping the alpha channel is most
 # of a PNG's cost (a strided copy: 17 ms a frame there, against 7-8 ms for an RGBA PNG whose rows
 # are plain copies); the file is ~13 % larger, which costs nothing between a web worker and its
@@ -140,6 +145,7 @@ class LiveFigure:
         self._seq = 0                # canvas path: the number of the pose last sent
         self.rig = None              # canvas path: how the picture follows the sliders (rig.py)
         self._last_refresh = -math.inf  # time.monotonic() of the last refresh
+        self._last_redraw = -math.inf   # time.monotonic() of the last full redraw
         self._at_rest = {}           # what waits until the picture stops moving (when_at_rest)
         self.dragged = False         # this refresh follows another closely (see in_motion)
         if self.uses_ipympl:
@@ -148,10 +154,12 @@ class LiveFigure:
             FigureCanvasAgg(self.figure)
         self._moving = []
         self._background = None
+        self._background_sent = True  # canvas path: the browser has the current background
         self._image = None           # the Image widget of the inline path, made on demand
         self._new_widget_callbacks = []   # see on_new_widget
         self._refreshes = 0
         self.figure.canvas.mpl_connect("draw_event", self._on_full_draw)
+        self.figure.when_drawn(self._send_background)
 
     # --- what moves ------------------------------------------------------------
     def add_moving(self, *artists):
@@ -175,10 +183,18 @@ class LiveFigure:
         if canvas.is_saving():        # savefig draws the moving artists too: not a background
             return
         self._background = canvas.copy_from_bbox(self.figure.bbox)
-        if self._canvas is not None:          # the browser gets the new background
-            self._canvas.background = self._encode()
+        self._background_sent = False         # sent once the draws this one sets off are done too
         self._paint_moving()
         self._agg_stale = False
+
+    def _send_background(self):
+        # the browser gets the new background, once per full draw: a draw whose texts stick out draws
+        # again at once (layout.py), and only the last picture is worth encoding and sending
+        if self._canvas is not None and not self._background_sent and self._background is not None:
+            from .canvas import background_png
+
+            self._background_sent = True
+            self._canvas.background = background_png(self)
 
     def _paint_moving(self):
         for artist in self._moving:
@@ -189,6 +205,11 @@ class LiveFigure:
         the last refresh was less than :data:`MOTION_S` ago: a slider is being dragged."""
         return (self.rig is not None and self._canvas is not None and self._canvas.shown
                 and time.monotonic() - self._last_refresh < MOTION_S)
+
+    def may_redraw(self) -> bool:
+        """Whether a full redraw may happen now: always at rest; while a slider is dragged (see
+        :meth:`in_motion`), at most every :data:`REDRAW_EVERY_S`."""
+        return not self.in_motion() or time.monotonic() - self._last_redraw >= REDRAW_EVERY_S
 
     def when_at_rest(self, owner, action) -> None:
         """Call ``action()`` once the picture stops moving (the browser asks for its rest frame,
@@ -205,6 +226,7 @@ class LiveFigure:
         """Draw everything again (after changing something that does not move,
         e.g. the axis limits or a title)."""
         self.dragged = False
+        self._last_redraw = time.monotonic()
         self.figure.canvas.draw()
         self._publish()
 

@@ -202,9 +202,12 @@ class RobotView:
         self._set_pose(self.q)
         if self.limits is not None and self.framing == "follow" and framing.needs_reframe(
                 self.ax, self._framed_points()):
-            if self.live is not None and self.live.in_motion():
-                # the browser is moving the picture itself (canvas backend): a new frame now would
-                # cost a full redraw per step; frame the robot again once it stops
+            if self.live is not None and self.live.in_motion() and not (
+                    self.live.may_redraw() and framing.leaves_view(self.ax, self._framed_points())):
+                # the browser is moving the picture itself (canvas backend): a new frame costs a
+                # full redraw, so while it moves only a robot leaving the picture is framed again,
+                # and at most every REDRAW_EVERY_S; the rest (a robot grown small, back home)
+                # once it stops
                 self.live.when_at_rest(self, self._reframe_at_rest)
             else:
                 self.reframe()

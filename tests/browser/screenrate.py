@@ -126,7 +126,7 @@ def frames_during(page, drag, seconds: float) -> dict:
     gaps = np.diff([start, *inside, end])
     span = max(end - start, 1.0) / 1000
     return {"fps": round(len(inside) / span, 1), "frames": len(inside), "seconds": round(span, 2),
-            "longest_gap_ms": round(float(gaps.max()), 1) if len(gaps) else None}
+            "longest_gap_ms": round(float(gaps.max()), 1) if len(gaps) else None, "window_ms": [start, end]}
 
 
 def mouse_drag(page, start: tuple, end: tuple, seconds: float, back: bool = False) -> None:
@@ -149,3 +149,43 @@ def mouse_drag(page, start: tuple, end: tuple, seconds: float, back: bool = Fals
             if wait > 0:
                 time.sleep(wait)
     page.mouse.up()
+
+
+def screencast_changes(page, box: dict, action):
+    """Run ``action()`` while Chrome screencasts the page (``Page.startScreencast``: one JPEG per
+    frame the compositor produces); returns what ``action`` returned and the times (page clock,
+    ms, as ``performance.now()``) of the screen frames in which the figure's box ``box`` (CSS px)
+    looks different from the frame before: the pictures of the figure that reached the screen."""
+    import base64
+    import io
+
+    from PIL import Image
+
+    cdp = page.context.new_cdp_session(page)
+    frames = []
+
+    def on_frame(params):
+        frames.append((params["metadata"]["timestamp"], params["data"]))
+        cdp.send("Page.screencastFrameAck", {"sessionId": params["sessionId"]})
+
+    cdp.on("Page.screencastFrame", on_frame)
+    cdp.send("Page.startScreencast", {"format": "jpeg", "quality": 60, "everyNthFrame": 1})
+    try:
+        time.sleep(0.5)
+        result = action()
+        time.sleep(0.3)
+    finally:
+        cdp.send("Page.stopScreencast")
+        cdp.detach()
+    origin = page.evaluate("() => performance.timeOrigin")            # epoch ms of performance.now() == 0
+    width, height = page.viewport_size["width"], page.viewport_size["height"]
+    changes, last = [], None
+    for stamp, data in frames:
+        image = np.asarray(Image.open(io.BytesIO(base64.b64decode(data))).convert("L"), dtype=np.int16)
+        sx, sy = image.shape[1] / width, image.shape[0] / height
+        crop = image[int(box["y"] * sy):int((box["y"] + box["height"]) * sy),
+                     int(box["x"] * sx):int((box["x"] + box["width"]) * sx)]
+        if last is not None and np.abs(crop - last).max() > 40:     # more than JPEG's own noise
+            changes.append(stamp * 1000 - origin)
+        last = crop
+    return result, changes

@@ -8,8 +8,9 @@ On the SSRMS notebook's first panel (07_ssrms.ipynb), in the built site:
   widgets; the notebook's arrow-key shortcuts took them);
 * **screen rate**: key → changed pixels (median, p90 over ``PRESSES`` presses) and
   frames per second of a 2-s slider drag, at device pixel ratio 1 and 2, recorded in
-  build/lite-measurements.json (asserted only under ``DHLAB_RATE_THRESHOLDS=1``, for an
-  idle machine: median ≤ 33 ms, p90 ≤ 50 ms, ≥ 30 frames/s).
+  build/lite-measurements.json (asserted for the canvas backend only under
+  ``DHLAB_RATE_THRESHOLDS=1``, for an idle machine: median ≤ 33 ms, p90 ≤ 50 ms, ≥ 30 frames/s
+  for the drag and the rotation; the old image path is the baseline, not held to them).
 """
 from __future__ import annotations
 
@@ -134,7 +135,6 @@ def test_screen_rate_in_the_browser_edition(browser, base_url, site, measurement
     assert sum(t is None for t in times) == 0, "a key press was never painted"
     assert all(p["changed_pixels"] > 0 for p in presses), "a key press left the figure's pixels unchanged"
     assert drag["frames"] > 0
-    if THRESHOLDS:
-        assert key["median"] <= 33 and key["p90"] <= 50 and drag["fps"] >= 30
-        if backend == "canvas":
-            assert rotation["fps"] >= 30
+    if THRESHOLDS and backend == "canvas":      # the issue's targets are the new path's; the old is the baseline
+        assert key["median"] <= 33 and key["p90"] <= 50, key
+        assert drag["fps"] >= 30 and rotation["fps"] >= 30, (drag, rotation)
