@@ -268,7 +268,7 @@ def test_the_counted_frames_reach_the_screen(browser, lab_server, lab_root, resu
     that reach the screen: during a slider drag and a rotation of the canvas backend (whose
     low-latency canvas hands its pictures to the compositor outside the page's own frames), a
     screencast of the page sees as many frames in which the figure changed, within 15 % (seen:
-    0-9 %, the screencast seeing a few more in a drag). The screencast encodes every frame, so
+    0-11 %, the screencast seeing a few more in a drag). The screencast encodes every frame, so
     the rates themselves are lower here than in test_screen_rate: only the agreement is asserted."""
     skip_unless_available("canvas")
     page = labdriver.open_lab(browser, lab_server, 1400, 1000, ratio)
