@@ -396,8 +396,8 @@ function render({ model, el }) {
     state.data = floats(buffers[0]);
     state.seq = msg.seq;
     const t = state.turning;
-    if (t && t.done && !state.loadingBackground) {
-      // matplotlib has drawn the turned view (its background did not change, or came first)
+    if (t && t.done) {
+      // matplotlib has drawn the turned view (a scene never runs ahead of its background: see above)
       const cam = msg.spaces[t.space];
       if (cam && cam.elev === t.elev && cam.azim === t.azim) state.turning = null;
     }

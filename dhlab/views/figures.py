@@ -144,21 +144,24 @@ class CourseFigure(Figure):
     Made by :func:`new_figure`; see the module's description.
     """
 
+    _depth = 0              # draws under way (a draw_event handler may draw again)
+    _when_drawn = ()        # see when_drawn
+
     def draw(self, renderer):
         enforce_min_text(self)
-        self._depth = getattr(self, "_depth", 0) + 1
+        self._depth += 1
         try:
             super().draw(renderer)
         finally:
             self._depth -= 1
         if not self._depth:
-            for callback in getattr(self, "_when_drawn", ()):
+            for callback in self._when_drawn:
                 callback()
 
     def when_drawn(self, callback) -> None:
         """Call ``callback()`` after each full draw, once the draws it set off are done too (a
         ``draw_event`` handler may draw again: see :func:`dhlab.views.layout.keep_texts_inside`)."""
-        self.__dict__.setdefault("_when_drawn", []).append(callback)
+        self._when_drawn = (*self._when_drawn, callback)
 
     def png(self) -> bytes:
         """The whole figure as PNG bytes, widened where something sticks out."""
