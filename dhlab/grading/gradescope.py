@@ -120,24 +120,29 @@ def export(out, secret_file=None, release=None, fallback=None, timeout: float = 
     with tempfile.TemporaryDirectory(prefix="dhlab-export-") as tmp:
         wheel = build_wheel(Path(tmp))
         tmp_zip = out.with_name(f".{out.name}.tmp")
-        with zipfile.ZipFile(tmp_zip, "w", zipfile.ZIP_DEFLATED) as z:
+        # 0600 from its first byte: the zip holds the variants' secret (a student's kernel on this
+        # machine runs as another user, in a private root where this folder does not exist)
+        fd = os.open(tmp_zip, os.O_WRONLY | os.O_CREAT | os.O_TRUNC | os.O_NOFOLLOW, 0o600)
+        os.fchmod(fd, 0o600)
+        with os.fdopen(fd, "wb") as raw, zipfile.ZipFile(raw, "w", zipfile.ZIP_DEFLATED) as z:
             _add(z, "setup.sh", SETUP_SH.format(wheel=wheel.name), executable=True)
             _add(z, "run_autograder", RUN_AUTOGRADER, executable=True)
             _add(z, CONFIG, json.dumps(config, indent=1) + "\n")
             z.write(wheel, wheel.name)
             if variants:
-                _add(z, SECRET, Path(secret_file).read_bytes())
+                _add(z, SECRET, Path(secret_file).read_bytes(), private=True)
                 for name in ("variants.json", "manifest.csv"):
                     path = Path(release) / "_teacher" / name
                     if path.is_file():
-                        z.write(path, (TEACHER / name).as_posix())
+                        _add(z, (TEACHER / name).as_posix(), path.read_bytes(), private=True)
         os.replace(tmp_zip, out)
     return out
 
 
-def _add(z: zipfile.ZipFile, name: str, data, executable: bool = False) -> None:
+def _add(z: zipfile.ZipFile, name: str, data, executable: bool = False, private: bool = False) -> None:
+    """Add ``data`` as ``name``; ``private``: unpacked readable by its owner only (0600)."""
     info = zipfile.ZipInfo(name, date_time=(2020, 1, 1, 0, 0, 0))
-    info.external_attr = (0o755 if executable else 0o644) << 16
+    info.external_attr = (0o755 if executable else 0o600 if private else 0o644) << 16
     info.compress_type = zipfile.ZIP_DEFLATED
     z.writestr(info, data)
 

@@ -130,6 +130,7 @@ class Isolation:
             kill_user(user[1])
         kill_token(token)
         shutil.rmtree(workdir, ignore_errors=True)
+        shutil.rmtree(f"{workdir}.root", ignore_errors=True)    # where its private root was mounted
 
 
 def _ensure_user(name: str):
@@ -196,6 +197,7 @@ def _probe(user, base: Path) -> tuple:
     finally:
         kill_user(user[1])
         shutil.rmtree(workdir, ignore_errors=True)
+        shutil.rmtree(f"{workdir}.root", ignore_errors=True)
     if proc.returncode != 0:
         return (proc.stderr.strip().splitlines() or ["the sandbox's self-test failed"])[-1][:200], ""
     return "", "; ".join(proc.stdout.strip().splitlines())

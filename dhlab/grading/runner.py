@@ -38,6 +38,7 @@ import inspect
 import json
 import os
 import queue
+import re
 import secrets
 import shutil
 import sys
@@ -50,12 +51,14 @@ try:
     from .answers import ANSWER_NAMES, MAX_JSON_BYTES, encode_json, to_plain
     from .notebook_code import (MAX_CODE_BYTES, MAX_NOTEBOOK_BYTES, NotebookError,  # noqa: F401 (API)
                                 read_code_cells, scan_for_tampering)
-    from .sandbox import OUTPUT_LIMIT_NOTE, apply_limits
+    from .sandbox import MAX_PROCESSES, OUTPUT_LIMIT_NOTE, apply_limits
+    from . import cgroups
 except ImportError:      # started as a script by the grader (see RUNNER below)
     from answers import ANSWER_NAMES, MAX_JSON_BYTES, encode_json, to_plain
     from notebook_code import (MAX_CODE_BYTES, MAX_NOTEBOOK_BYTES, NotebookError,  # noqa: F401 (API)
                                read_code_cells, scan_for_tampering)
-    from sandbox import OUTPUT_LIMIT_NOTE, apply_limits
+    from sandbox import MAX_PROCESSES, OUTPUT_LIMIT_NOTE, apply_limits
+    import cgroups
 
 __all__ = ["RunResult", "run_notebook", "read_code_cells", "scan_for_tampering", "main",
            "NotebookError", "MAX_NOTEBOOK_BYTES", "MAX_CODE_BYTES"]
@@ -68,7 +71,42 @@ RUNNER = Path(__file__).resolve()
 SANDBOX = RUNNER.with_name("sandbox.py")
 EXTRACT_SECONDS = 20
 INTERRUPT_GRACE = 5
+LOAD_EXTRA = 60                  # seconds a cell that waited for a CPU may run past its limit (at most 2 x it)
+FLOOD_FACTOR = 3                 # output read past the cap before a cell is left out (see _Kernel.execute)
 MAX_ATTEMPTS = 3
+KERNEL_START_SECONDS = 120       # a loaded machine (two graders, load 10 on 2 cores) starts kernels slowly
+TMP_MB = 64                      # the kernel's private /tmp and /dev/shm (tmpfs: counts as its memory)
+# what the kernel may inherit of the grader's environment: the language, nothing else (no token,
+# password or path of the teacher's reaches a student's code); values must look like a locale
+PASSED_ENV = ("LANG", "LANGUAGE", "LC_ALL", "LC_CTYPE", "LC_MESSAGES", "LC_NUMERIC", "TZ", "DHLAB_LANGUAGE")
+_LOCALE_LIKE = re.compile(r"[A-Za-z0-9_.:@/+-]{1,64}")
+
+
+def kernel_environment(workdir: Path, token: str = "", environ=None) -> dict:
+    """The whole environment of a student's kernel, built from an allow-list, never inherited.
+
+    >>> env = kernel_environment(Path("/tmp/k"), environ={"LANG": "es_ES.UTF-8", "CANVAS_API_TOKEN": "xyz"})
+    >>> env["LANG"], "CANVAS_API_TOKEN" in env, env["HOME"]
+    ('es_ES.UTF-8', False, '/tmp/k')
+    """
+    environ = os.environ if environ is None else environ
+    env = {k: environ[k] for k in PASSED_ENV if _LOCALE_LIKE.fullmatch(environ.get(k, ""))}
+    env.update(PATH=os.pathsep.join([os.path.dirname(sys.executable), "/usr/local/bin", "/usr/bin", "/bin"]),
+               # the kernel writes no compiled modules (dhlab's __pycache__ is part of its fingerprint)
+               PYTHONDONTWRITEBYTECODE="1", PYTHONNOUSERSITE="1", PYTHONHASHSEED="0",
+               OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1", MKL_NUM_THREADS="1", MPLBACKEND="agg",
+               HOME=str(workdir), TMPDIR=str(workdir), IPYTHONDIR=str(workdir / ".ipython"),
+               MPLCONFIGDIR=str(workdir / ".matplotlib"), JUPYTER_RUNTIME_DIR=str(workdir / ".runtime"),
+               DHLAB_GRADE_TOKEN=token)      # which submission a kernel runs (ps, cleanup)
+    dhlab_parent = _dhlab_parent()
+    if dhlab_parent and dhlab_parent in environ.get("PYTHONPATH", "").split(os.pathsep):
+        env["PYTHONPATH"] = dhlab_parent     # dhlab found only through PYTHONPATH: that entry alone
+    return env
+
+
+def _dhlab_parent() -> str:
+    """The folder holding the dhlab package (two levels above this file)."""
+    return str(RUNNER.parents[2])
 
 
 @dataclass
@@ -86,6 +124,8 @@ class RunResult:
     out_of_time: bool = False                        # --total-timeout reached
     restarts: int = 0
     tampering: list = field(default_factory=list)    # what the notebook does to dhlab
+    limit: str = ""                                  # "memory": the submission's memory limit was reached
+    isolation: str = ""                              # how the kernel was kept apart (what held, what did not)
     answers_json: str | None = None
     answers_error: str = ""
     grader_error: str = ""
@@ -108,7 +148,7 @@ class _Kernel:
     """A kernel started through the sandbox launcher, driven cell by cell."""
 
     def __init__(self, workdir: Path, private: Path, memory_mb: float, cpu_seconds: float, file_mb: float,
-                 output_mb: float, pid_file: Path | None, token: str = "", user=None, hide=()):
+                 output_mb: float, pid_file: Path | None, token: str = "", user=None, group_dirs=()):
         from jupyter_client import KernelManager
         from jupyter_client.kernelspec import KernelSpecManager
 
@@ -116,9 +156,11 @@ class _Kernel:
         spec_dir.mkdir(parents=True, exist_ok=True)
         argv = [sys.executable, "-B", str(SANDBOX), "--memory-mb", str(memory_mb),
                 "--cpu-seconds", str(cpu_seconds), "--file-mb", str(file_mb), "--output-mb", str(output_mb)]
+        self.report = workdir / f".sandbox-{secrets.token_hex(4)}"
         if user is not None:
-            argv += ["--uid", str(user[0]), "--gid", str(user[1]), "--workdir", str(workdir)]
-            argv += [a for folder in hide for a in ("--hide", str(folder))]
+            argv += ["--uid", str(user[0]), "--gid", str(user[1]), "--workdir", str(workdir),
+                     "--tmp-mb", str(TMP_MB), "--report", str(self.report)]
+            argv += [a for folder in group_dirs for a in ("--group", folder)]
         # outputs are counted, never kept: no pictures are rendered (text and HTML still count for floods)
         argv += ["--", "-f", "{connection_file}", "--DisplayFormatter.active_types=text/plain",
                  "--DisplayFormatter.active_types=text/html"]
@@ -129,24 +171,31 @@ class _Kernel:
         self.km = KernelManager(kernel_name="dhlab-sandbox", transport="ipc", ip=str(workdir / "kernel"),
                                 kernel_spec_manager=KernelSpecManager(kernel_dirs=[str(spec_dir.parent)]))
         self.km.connection_file = str(private / f"connection-{secrets.token_hex(8)}.json")
-        env = {k: v for k, v in os.environ.items()
-               if not k.startswith(("JPY_", "JUPYTER_", "DHLAB_GRADE_")) and k not in ("OLDPWD", "PWD")}
-        # the kernel's environment names no file of the grader: HOME and TMPDIR are its own folder;
-        # it writes no compiled modules (dhlab's __pycache__ is part of the package's fingerprint)
-        env.pop("PYTHONPYCACHEPREFIX", None)
-        env.update(OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1", MKL_NUM_THREADS="1",
-                   MPLBACKEND="agg", PYTHONHASHSEED="0", HOME=str(workdir), TMPDIR=str(workdir),
-                   PYTHONDONTWRITEBYTECODE="1",
-                   IPYTHONDIR=str(workdir / ".ipython"), MPLCONFIGDIR=str(workdir / ".matplotlib"),
-                   DHLAB_GRADE_TOKEN=token)      # which submission a kernel runs (ps, cleanup)
-        self.km.start_kernel(cwd=str(workdir), env=env)
-        if pid_file is not None:
-            pid = getattr(getattr(self.km, "provisioner", None), "pid", None)
-            if pid:
-                pid_file.write_text(str(pid), encoding="utf-8")
+        self.km.start_kernel(cwd=str(workdir), env=kernel_environment(workdir, token))
+        self.pid = pid = getattr(getattr(self.km, "provisioner", None), "pid", None)
+        if pid_file is not None and pid:
+            pid_file.write_text(str(pid), encoding="utf-8")
         self.kc = self.km.client()
         self.kc.start_channels()
-        self.kc.wait_for_ready(timeout=60)
+        self.kc.wait_for_ready(timeout=KERNEL_START_SECONDS)
+
+    def sandbox_missing(self) -> list:
+        """What the sandbox could not do for this kernel (it wrote it as root, before any cell ran)."""
+        try:
+            fd = os.open(self.report, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+        except OSError:
+            return []
+        with os.fdopen(fd, "rb") as f:
+            return [line for line in f.read(4000).decode("utf-8", "replace").splitlines() if line]
+
+    def waited(self) -> float:
+        """Seconds the kernel process has spent waiting for a CPU (the scheduler's run-queue
+        time, /proc/PID/schedstat); 0 where the system does not say."""
+        try:
+            with open(f"/proc/{self.pid}/schedstat", "rb") as f:
+                return int(f.read().split()[1]) / 1e9
+        except (OSError, ValueError, IndexError, TypeError):
+            return 0.0
 
     def alive(self) -> bool:
         return bool(self.km.is_alive())
@@ -159,9 +208,13 @@ class _Kernel:
         except Exception:
             result.status = "dead"
             return result
-        end = time.monotonic() + limit
+        start, waited = time.monotonic(), self.waited()
         while True:
-            left = end - time.monotonic()
+            # the limit counts the time the cell ran or slept, not the time it waited for a CPU:
+            # on a loaded machine (two graders, -j above the cores) a correct cell is not cut off
+            # for the machine's slowness; the wall-clock time is bounded all the same (LOAD_EXTRA)
+            wall = time.monotonic() - start
+            left = min(limit - (wall - (self.waited() - waited)), limit + min(2 * limit, LOAD_EXTRA) - wall)
             if left <= 0:
                 return self._stop(msg_id, result, "timeout")
             status = self._next(msg_id, min(left, 0.5), result)
@@ -170,11 +223,14 @@ class _Kernel:
             if status == "dead":
                 result.status = "dead"
                 return result
-            if result.output_bytes > cap_bytes or result.capped_in_kernel:
-                # no interrupt: the kernel still holds a backlog of output to send, which would
-                # stall every later cell; the runner starts a new kernel without this cell
+            if result.output_bytes > FLOOD_FACTOR * cap_bytes:
+                # far past the cap: the kernel is not capping this output (it is not print's), so
+                # it still holds a backlog that would stall every later cell: a new kernel runs
+                # the notebook without this cell
                 result.status = result.stopped_for = "output"
                 return result
+            # up to then the flood only costs reading: the kernel drops a cell's print output
+            # past the cap itself (sandbox.limit_output), so the cell goes on and its answers count
 
     def _next(self, msg_id, wait, result):
         """Read one message of the running cell: 'idle' when it is done, 'dead' when the
@@ -278,8 +334,10 @@ def run_notebook(path, timeout: float = 30, total_timeout: float = 120, memory_m
     ``progress_file``: where to write the number of the cell being run (so the grader
     knows which cell to leave out if this whole process is killed); ``skip``: cells
     not to run; ``workdir``: the kernel's own folder (default: a new temporary one);
-    ``user``: (uid, gid) the kernel runs as (the runner must be root); ``hide``:
-    folders the kernel must not see; ``token``: put in the kernel's environment.
+    ``user``: (uid, gid) the kernel runs as (the runner must be root: the kernel then gets a
+    private root, in which no folder but its own exists, and the submission a control group);
+    ``hide``: kept for older callers, nothing to do (the private root shows nothing else);
+    ``token``: put in the kernel's environment.
     """
     started = time.monotonic()
     result = RunResult()
@@ -299,18 +357,23 @@ def run_notebook(path, timeout: float = 30, total_timeout: float = 120, memory_m
     workdir = Path(tempfile.mkdtemp(prefix="dhlab-grade-")) if own_workdir else Path(workdir)
     private = Path(tempfile.mkdtemp(prefix="dhlab-runner-"))        # the grader's user only (0700)
     token = token or secrets.token_hex(8)
+    group = _submission_group(user, token, memory_mb, result)
     try:
         for attempt in range(MAX_ATTEMPTS):
             kernel = _Kernel(workdir, private, memory_mb, cpu_seconds=total_timeout + 60, file_mb=64,
                              output_mb=output_mb, pid_file=Path(pid_file) if pid_file else None, token=token,
-                             user=user, hide=hide)
+                             user=user, group_dirs=group.dirs if group else ())
             try:
+                if attempt == 0 and user is not None:
+                    _describe_isolation(result, kernel.sandbox_missing())
                 broken = _run_cells(kernel, cells, skip, timeout, deadline, cap, result, attempt == 0, progress)
                 if broken is None:
                     _extract(kernel, workdir, result)
                     return result
             finally:
                 kernel.shutdown()
+                if group is not None and group.oom_kills():
+                    result.limit = "memory"
             skip.add(broken)
             result.skipped = sorted(skip)
             if time.monotonic() > deadline - 2 or attempt == MAX_ATTEMPTS - 1:
@@ -323,9 +386,37 @@ def run_notebook(path, timeout: float = 30, total_timeout: float = 120, memory_m
         return result
     finally:
         result.seconds = round(time.monotonic() - started, 2)
+        if group is not None:
+            if group.oom_kills():
+                result.limit = "memory"
+            group.remove()                       # every process the submission started ends here
         shutil.rmtree(private, ignore_errors=True)
         if own_workdir:
             shutil.rmtree(workdir, ignore_errors=True)
+        shutil.rmtree(f"{workdir}.root", ignore_errors=True)      # the private root's mount point
+
+
+def _submission_group(user, token: str, memory_mb: float, result: RunResult):
+    """The submission's control group (memory and processes of the whole submission, children
+    included: :mod:`dhlab.grading.cgroups`), or None where none can be made (then each process
+    has its own limits, and ``result.isolation`` says so)."""
+    if user is None:
+        result.isolation = "none: the kernel runs as the grader's own user, with per-process limits"
+        return None
+    group = cgroups.create(f"sub-{token}", memory_mb, MAX_PROCESSES)
+    result.isolation = group.describe() if group else (
+        f"per-process limits only ({cgroups.last_refusal}): {memory_mb:.0f} MB of address space per process")
+    return group
+
+
+def _describe_isolation(result: RunResult, missing: list) -> None:
+    """``result.isolation``: the user, the private root and network, the limits — and what did not hold."""
+    held = ["own user"]
+    if not any("private root" in m for m in missing):
+        held.append("private root (system, Python and dhlab read-only; own folder, /tmp, /dev/shm)")
+    if not any("network" in m for m in missing):
+        held.append("no network")
+    result.isolation = "; ".join([", ".join(held), result.isolation] + [f"NOT: {m}" for m in missing])
 
 
 def _run_cells(kernel, cells, skip, timeout, deadline, cap, result, record, progress) -> int | None:
@@ -340,6 +431,9 @@ def _run_cells(kernel, cells, skip, timeout, deadline, cap, result, record, prog
             result.out_of_time = True
             return None if kernel.alive() else number
         cell = kernel.execute(source, min(timeout, left), cap)
+        if (cell.capped_in_kernel or cell.output_bytes > cap) and cell.stopped_for != "output" \
+                and number not in [c for c, _ in result.output_capped]:
+            result.output_capped.append([number, cell.output_bytes])     # its output past the cap was dropped
         if cell.status == "error" and record:
             result.errors.append([number, cell.ename, cell.evalue])
         if cell.stopped_for == "timeout":

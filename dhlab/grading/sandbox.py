@@ -54,10 +54,15 @@ OUTPUT_LIMIT_NOTE = "[dhlab grader: output limit reached; the rest of this cell'
 MAX_PROCESSES = 128       # per kernel user (RLIMIT_NPROC): no fork bomb
 
 CLONE_NEWNS = 0x00020000
+CLONE_NEWIPC = 0x08000000
 CLONE_NEWNET = 0x40000000
 MS_RDONLY, MS_NOSUID, MS_NODEV, MS_NOEXEC = 1, 2, 4, 8
-MS_BIND, MS_REC, MS_PRIVATE = 4096, 16384, 1 << 18
+MS_REMOUNT, MS_BIND, MS_REC, MS_PRIVATE = 32, 4096, 16384, 1 << 18
 MNT_DETACH = 2
+PIVOT_ROOT = {"x86_64": 155, "aarch64": 41, "riscv64": 41, "ppc64le": 203, "s390x": 217, "i686": 217}  # syscall numbers
+# what every kernel reads, bound read-only into its private root (links such as /bin -> usr/bin copied)
+SYSTEM_PATHS = ("/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32", "/etc")
+DEVICES = ("/dev/null", "/dev/zero", "/dev/full", "/dev/random", "/dev/urandom")
 
 
 def apply_limits(memory_mb: float | None, cpu_seconds: float | None, file_mb: float | None) -> None:
@@ -106,6 +111,23 @@ def limit_output(max_bytes: int) -> None:
         return write(self, string)
 
     iostream.OutStream.write = limited_write
+    _keep_no_output_history()
+
+
+def _keep_no_output_history() -> None:
+    """IPython 9 keeps every string a cell prints in memory (``history_manager.outputs``, through
+    ``InteractiveShell._tee``), even past our cap: a cell printing in a loop would fill the memory
+    limit with output nobody reads. The grader needs no output history, so none is kept."""
+    import contextlib
+    try:
+        from IPython.core.interactiveshell import InteractiveShell
+    except ImportError:
+        return
+    if hasattr(InteractiveShell, "_tee"):
+        @contextlib.contextmanager
+        def no_tee(self, channel):
+            yield
+        InteractiveShell._tee = no_tee
 
 
 def _libc():
@@ -121,87 +143,152 @@ def _mount(libc, source, target, fstype, flags, data=None):
         raise OSError(err, f"mount {fstype or 'bind'} on {target}: {os.strerror(err)}")
 
 
-def _remove_hold(libc, hold: str, held) -> None:
-    """The paths are mounted in their places now: detach the temporary spots and remove their
-    folder, so no kernel leaves a folder behind in /tmp (the mounts in place stay)."""
-    try:
-        for _, spot in held:
-            if libc.umount2(spot.encode(), MNT_DETACH) != 0:
-                return                            # still mounted: leave the (empty) folder
-            os.rmdir(spot)
-        os.rmdir(hold)
-    except OSError:
-        pass                                      # an empty folder left in /tmp is harmless
+def _covered(path: str, by) -> bool:
+    return any(path == q or path.startswith(q.rstrip("/") + "/") for q in by)
 
 
 def _needed_paths() -> list:
-    """What the kernel must reach: the Python installation, the environment, dhlab's folder."""
+    """What the kernel must read beyond the system: the Python installation, the environment
+    (a virtual environment's folder) and dhlab's own folder — never the folder around it (an
+    editable install's checkout holds the notebooks and tests, a teacher's may hold more)."""
     import importlib.util
-    paths = {sys.base_prefix, sys.prefix}
+    paths = {sys.base_prefix, sys.prefix, sys.exec_prefix, os.path.dirname(os.path.realpath(sys.executable))}
     spec = importlib.util.find_spec("dhlab")
     if spec and spec.submodule_search_locations:
-        paths.add(os.path.dirname(os.path.realpath(list(spec.submodule_search_locations)[0])))
-    paths = sorted(os.path.realpath(p) for p in paths if os.path.isdir(p))
-    outer = [p for p in paths if not any(p != q and p.startswith(q.rstrip("/") + "/") for q in paths)]
-    return outer
+        paths.add(os.path.realpath(list(spec.submodule_search_locations)[0]))
+    paths = sorted(os.path.realpath(p) for p in paths if p and os.path.isdir(p))
+    return [p for p in paths if not _covered(p, [q for q in paths if q != p])]
 
 
-def _blocked_ancestor(path: str):
-    """The first folder on the way to ``path`` that other users cannot enter, or None."""
-    current = "/"
-    for part in path.strip("/").split("/"):
-        if not os.stat(current).st_mode & 0o001:
-            return current
-        current = os.path.join(current, part)
-    return None
+def _mount_flags(path: str) -> int:
+    """The flags of the mount ``path`` is on (nosuid, nodev, noexec, …), kept when it is made read-only."""
+    keep = 0
+    flag = os.statvfs(path).f_flag
+    for st, ms in ((os.ST_NOSUID, MS_NOSUID), (os.ST_NODEV, MS_NODEV), (os.ST_NOEXEC, MS_NOEXEC),
+                   (getattr(os, "ST_NOATIME", 1024), 1024), (getattr(os, "ST_NODIRATIME", 2048), 2048),
+                   (getattr(os, "ST_RELATIME", 4096), 1 << 21)):
+        if flag & st:
+            keep |= ms
+    return keep
 
 
-def enter_sandbox(uid: int, gid: int, hide=()) -> list:
-    """As root: a private mount namespace (see the module doc), then become ``uid``/``gid``.
-    Returns what could not be done (empty when everything held); raises OSError when
-    the process could not become the unprivileged user."""
+def _place(root: str, path: str, like: str) -> str:
+    """Make ``path`` inside ``root`` (folders on the way 0755, so the kernel's user can pass) for a
+    bind of ``like``: a folder or an empty file. Returns the target."""
+    target = os.path.join(root, path.lstrip("/"))
+    old = os.umask(0o022)
+    try:
+        if os.path.isdir(like):
+            os.makedirs(target, exist_ok=True)
+        else:
+            os.makedirs(os.path.dirname(target), exist_ok=True)
+            if not os.path.exists(target):
+                open(target, "a").close()
+    finally:
+        os.umask(old)
+    return target
+
+
+def _bind(libc, root: str, path: str, writable: bool = False) -> None:
+    """Bind ``path`` at the same place inside ``root``; read-only unless ``writable``. A symbolic
+    link (``/bin`` -> ``usr/bin`` on merged-/usr systems) is copied as a link."""
+    if os.path.islink(path) and os.path.dirname(path) == "/":
+        link = os.path.join(root, path.lstrip("/"))
+        if not os.path.lexists(link):
+            os.symlink(os.readlink(path), link)
+        return
+    target = _place(root, path, path)
+    _mount(libc, path, target, None, MS_BIND | MS_REC)
+    if not writable:
+        _mount(libc, None, target, None, MS_BIND | MS_REMOUNT | MS_RDONLY | _mount_flags(path))
+
+
+def root_folder(workdir: str | None) -> str:
+    """Where the private root is mounted (in the kernel's mount namespace only): an empty folder
+    beside the kernel's own, ``<workdir>.root``, which the grader removes with it."""
+    return os.path.realpath(workdir).rstrip("/") + ".root" if workdir else tempfile.mkdtemp(prefix="dhlab-root-")
+
+
+def _private_root(libc, workdir: str, tmp_mb: float) -> str:
+    """Build the kernel's whole file system in a new tmpfs and return its folder: the system's
+    programs and libraries, /etc, Python and dhlab read-only; the kernel's own folder
+    writable; a private /tmp and /dev/shm of ``tmp_mb`` MB each; a few devices; a /proc that
+    shows only the kernel user's processes. Nothing else exists in it: not the submissions,
+    the release, the secret, the gradebook, the teacher's home, nor sockets at file paths."""
+    root = root_folder(workdir)
+    os.makedirs(root, mode=0o700, exist_ok=True)       # beside the kernel's folder, removed with it
+    _mount(libc, "tmpfs", root, "tmpfs", MS_NOSUID | MS_NODEV, "mode=0755,size=4m")
+    for name in ("tmp", "dev/shm"):
+        folder = _place(root, "/" + name, "/")
+        _mount(libc, "tmpfs", folder, "tmpfs", MS_NOSUID | MS_NODEV,
+               f"mode=1777,size={max(1, int(tmp_mb))}m")
+    bound = []
+    for path in [*SYSTEM_PATHS, *_needed_paths()]:
+        if os.path.islink(path) and os.path.dirname(path) == "/":
+            _bind(libc, root, path)                      # /bin -> usr/bin: the link itself
+        elif os.path.exists(path) and not _covered(os.path.realpath(path), bound):
+            _bind(libc, root, os.path.realpath(path))
+            bound.append(os.path.realpath(path))
+    for device in DEVICES:
+        if os.path.exists(device):
+            _bind(libc, root, device, writable=True)
+    for name, target in (("fd", "/proc/self/fd"), ("stdin", "/proc/self/fd/0"), ("stdout", "/proc/self/fd/1"),
+                         ("stderr", "/proc/self/fd/2")):
+        os.symlink(target, os.path.join(root, "dev", name))
+    if workdir:
+        _bind(libc, root, os.path.realpath(workdir), writable=True)
+    proc = _place(root, "/proc", "/")
+    _mount(libc, "proc", proc, "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, "hidepid=2")
+    return root
+
+
+def _pivot(libc, root: str) -> None:
+    """Make ``root`` this process's ``/`` and drop the old one (pivot_root(".", "."), then detach)."""
+    os.chdir(root)
+    number = PIVOT_ROOT.get(os.uname().machine)
+    if number is None or libc.syscall(number, b".", b".") != 0:
+        err = ctypes.get_errno()
+        raise OSError(err, f"pivot_root: {os.strerror(err)}")
+    if libc.umount2(b".", MNT_DETACH) != 0:
+        err = ctypes.get_errno()
+        raise OSError(err, f"detaching the old root: {os.strerror(err)}")
+    os.chdir("/")
+
+
+def join_group(folders) -> None:
+    """Enter the submission's control group(s) (:mod:`dhlab.grading.cgroups`): its memory and
+    process limits then hold for this kernel and every process it starts, together."""
+    for folder in folders:
+        with open(os.path.join(folder, "cgroup.procs"), "w", encoding="ascii") as f:
+            f.write(str(os.getpid()))
+
+
+def enter_sandbox(uid: int, gid: int, workdir: str | None = None, tmp_mb: float = 64, groups=(),
+                  report: str | None = None) -> list:
+    """As root: join the submission's control groups, enter private mount, IPC and network
+    namespaces with a private root (:func:`_private_root`), then become ``uid``/``gid`` for good.
+    Returns what could not be done (empty when everything held); raises OSError when the
+    process could not become the unprivileged user."""
     missing = []
     libc = _libc()
     try:
-        if libc.unshare(CLONE_NEWNS) != 0:
+        join_group(groups)
+    except OSError as e:
+        missing.append(f"the submission's control group could not be joined ({e.strerror or e})")
+    try:
+        if libc.unshare(CLONE_NEWNS | CLONE_NEWIPC) != 0:
             raise OSError(ctypes.get_errno(), "unshare(CLONE_NEWNS) refused")
         _mount(libc, None, "/", None, MS_REC | MS_PRIVATE)
-        blocked = {}
-        for path in _needed_paths():
-            ancestor = _blocked_ancestor(path)
-            if ancestor:
-                blocked.setdefault(ancestor, []).append(path)
-        for ancestor, paths in blocked.items():          # e.g. /root (0700) holding pyenv's Python
-            hold = tempfile.mkdtemp(prefix="dhlab-hold-")
-            held = []
-            for i, path in enumerate(paths):
-                spot = os.path.join(hold, str(i))
-                os.mkdir(spot)
-                _mount(libc, path, spot, None, MS_BIND | MS_REC)
-                held.append((path, spot))
-            _mount(libc, "tmpfs", ancestor, "tmpfs", MS_NOSUID | MS_NODEV, "mode=0755,size=1m")
-            old = os.umask(0o022)
-            for path, spot in held:
-                os.makedirs(path, exist_ok=True)
-                _mount(libc, spot, path, None, MS_BIND | MS_REC)
-            os.umask(old)
-            _remove_hold(libc, hold, held)
-        needed = _needed_paths()
-        for folder in hide:                                # the other submissions
-            folder = os.path.realpath(folder)
-            if any(p == folder or p.startswith(folder.rstrip("/") + "/") for p in needed):
-                missing.append(f"{folder} holds dhlab or Python itself, so it cannot be hidden")
-            elif os.path.isdir(folder):
-                _mount(libc, "tmpfs", folder, "tmpfs", MS_NOSUID | MS_NODEV | MS_NOEXEC, "mode=0755,size=64k")
-        try:
-            _mount(libc, "proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, "hidepid=2")
-        except OSError:
-            missing.append("/proc shows other users' processes (hidepid not available)")
+        _pivot(libc, _private_root(libc, workdir, tmp_mb))
+        os.chdir(os.path.realpath(workdir) if workdir else "/")      # the kernel starts in its own folder
     except OSError as e:
-        missing.append(f"no private mount namespace ({e.strerror or e}): the submissions folder is not hidden")
+        missing.append(f"no private root ({e.strerror or e}): a kernel can read every file its user may read")
     if libc.unshare(CLONE_NEWNET) != 0:           # no network: only a loopback that is down
         missing.append(f"the kernels have network access (no network namespace: "
                        f"{os.strerror(ctypes.get_errno())})")
+    if report:                                    # for the runner: what held (written as root, before any student code)
+        with open(report, "w", encoding="utf-8") as f:
+            f.write("\n".join(missing))
     resource.setrlimit(resource.RLIMIT_NPROC, (MAX_PROCESSES, MAX_PROCESSES))
     os.setgroups([])
     os.setgid(gid)
@@ -233,20 +320,31 @@ def main(argv=None) -> None:
     parser.add_argument("--uid", type=int, default=None, help="become this user (the grader runs as root)")
     parser.add_argument("--gid", type=int, default=None)
     parser.add_argument("--workdir", default=None, help="the kernel's own folder (owned by --uid)")
-    parser.add_argument("--hide", action="append", default=[], help="a folder the kernel must not see")
+    parser.add_argument("--tmp-mb", type=float, default=64, help="size of the private /tmp and /dev/shm, MB each")
+    parser.add_argument("--group", action="append", default=[],
+                        help="a control group folder to join (the submission's, dhlab.grading.cgroups)")
+    parser.add_argument("--report", default=None, help="where to write what did not hold (one line each)")
+    parser.add_argument("--hide", action="append", default=[],
+                        help="a folder the probe checks is out of sight (nothing outside the private root is seen)")
     parser.add_argument("--probe", action="store_true",
                         help="set up the sandbox, check that dhlab imports and cannot be written, and exit")
     parser.add_argument("kernel_args", nargs=argparse.REMAINDER,
                         help="arguments for ipykernel, after --")
     args = parser.parse_args(argv)
     rest = args.kernel_args[1:] if args.kernel_args[:1] == ["--"] else args.kernel_args
+    address_space = args.memory_mb
     if args.uid is not None:
         rest = _private_connection_file(rest, args.workdir, args.uid, args.gid)
-        missing = enter_sandbox(args.uid, args.gid, args.hide)
+        missing = enter_sandbox(args.uid, args.gid, args.workdir, args.tmp_mb, args.group, args.report)
         if args.probe:
             _probe(missing, args.hide)
             return
-    apply_limits(args.memory_mb, args.cpu_seconds, args.file_mb)
+        if args.group and args.memory_mb and not any("control group" in m for m in missing):
+            # the group holds the whole submission to --memory-mb; the address space, which counts
+            # reserved but unused memory (numpy's and BLAS's arenas), is only a backstop that turns
+            # an absurd allocation into a MemoryError in the cell instead of an OOM kill
+            address_space = max(4 * args.memory_mb, args.memory_mb + 4096)
+    apply_limits(address_space, args.cpu_seconds, args.file_mb)
     if args.output_mb:
         limit_output(int(args.output_mb * 1e6))
     # started as a script, this folder is sys.path[0]; a kernel started with -m has '' (its cwd)
@@ -261,6 +359,8 @@ def _probe(missing, hide) -> None:
     """Exit 0 when the sandbox user can run the kernel and cannot write dhlab; say what is missing."""
     import importlib.util
     spec = importlib.util.find_spec("dhlab")
+    if spec is None:
+        sys.exit(f"dhlab does not import in the sandbox (Python {sys.executable}, path {sys.path})")
     import ipykernel  # noqa: F401  (the kernel must import)
     folder = os.path.dirname(spec.origin)
     if os.access(folder, os.W_OK) or os.access(spec.origin, os.W_OK):
