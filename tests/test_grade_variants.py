@@ -195,7 +195,8 @@ def test_who_handed_it_in(class_setup, released):
     assert GV.identify(vs, "ana.ipynb")[0] == "ana"
     assert GV.identify(vs, "late/ana.ipynb")[0] == "ana"
     assert GV.identify(vs, "submitted/bruno/ps8/08_puma_assignment.ipynb")[0] == "bruno"
-    assert GV.identify(vs, "submitted/bruno/ps8/carla.ipynb")[0] == "carla"       # the file name first
+    assert GV.identify(vs, "submitted/bruno/ps8/carla.ipynb")[0] == "bruno"       # nbgrader: the folder wins
+    assert GV.identify(vs, "submitted/nobody/ps8/carla.ipynb")[0] is None
     who, how = GV.identify(vs, "ana_final.ipynb")
     assert who is None and "'ana_final' matches no student" in how
     alone = GV.setup(released[1])                                              # no roster: folder, else stem

@@ -156,7 +156,7 @@ def _solved(tmp, student, folder):
 
 def _manifest(tmp):
     import csv
-    with open(tmp / "release" / "_teacher" / "manifest.csv", newline="", encoding="utf-8") as f:
+    with open(tmp / "release" / "_teacher" / "manifest.csv", newline="", encoding="utf-8-sig") as f:
         return list(csv.DictReader(f))
 
 

@@ -41,8 +41,8 @@ def graded(tmp_path):
 
 def _read(path) -> list:
     text = path.read_text(encoding="utf-8")
-    assert not text.startswith("\ufeff")
-    return list(csv.reader(io.StringIO(text)))
+    assert text.startswith("\ufeff")                     # UTF-8 with BOM: Excel shows 'García'
+    return list(csv.reader(io.StringIO(text[1:])))
 
 
 def test_canvas_from_canvas_own_export(graded, tmp_path, capsys):
@@ -88,7 +88,7 @@ def test_moodle_has_the_id_the_grade_and_the_feedback(graded, tmp_path):
 
 
 def test_a_student_with_two_submissions_is_an_error_not_a_guess(graded, tmp_path, capsys):
-    rows = list(csv.DictReader(open(graded, newline="", encoding="utf-8")))
+    rows = list(csv.DictReader(open(graded, newline="", encoding="utf-8-sig")))
     rows.append(_row("submitted/ana/ps8/08_puma_assignment", "3"))
     write_csv(graded, rows, COLUMNS)
     roster = tmp_path / "roster.csv"

@@ -74,7 +74,7 @@ def test_the_roster_column_overrides_the_option_and_each_notebook_says_its_langu
             assert "The robot" not in text and "Part 1 ·" not in text
         else:
             assert "## Your robot" in text and "Parte 1" not in text
-    manifest = (out / "_teacher" / "manifest.csv").read_text(encoding="utf-8").splitlines()
+    manifest = (out / "_teacher" / "manifest.csv").read_text(encoding="utf-8-sig").splitlines()
     assert manifest[0].endswith(",language") and manifest[1].endswith(",es") and manifest[3].endswith(",en")
     teacher = json.loads((out / "_teacher" / "variants.json").read_text(encoding="utf-8"))
     assert "language" not in teacher["ana"]                      # the teacher's signed record is unchanged

@@ -40,7 +40,7 @@ def test_release_writes_one_signed_notebook_per_student(class_folder):
     files = sorted(p.name for p in (folder / "out").glob("*.ipynb"))
     assert files == sorted(["ana.ipynb", "bruno.ipynb", "cobra.ipynb", R.safe_filename("Ana María") + ".ipynb",
                             R.safe_filename("Ana_María") + ".ipynb"])
-    manifest = (folder / "out" / "_teacher" / "manifest.csv").read_text(encoding="utf-8").splitlines()
+    manifest = (folder / "out" / "_teacher" / "manifest.csv").read_text(encoding="utf-8-sig").splitlines()
     assert manifest[0] == "student_id,file,family,fingerprint,language" and len(manifest) == 6
     fingerprints = set()
     for line in manifest[1:]:

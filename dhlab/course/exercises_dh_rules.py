@@ -7,7 +7,6 @@ A case is read as one case: an answer that names none, several, or says what doe
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 
@@ -19,35 +18,17 @@ from .exercises import Feedback
 from .exercises_dh_common import (ANGLE_TOL, Relation, _as_robot, _axes_of, _blank, _num, _read_numbers, _right,
                                   _short, _unanswered, _whole_number, _wrong, axis_relation)
 from .exercises_dh_frames import four_axis_arm
-from .word_checks import words
+from .case_words import CASE_NUMBERS as _CASE_NUMBERS, read_case_words
 
 __all__ = ["check_x_cases", "ROW_EXERCISE", "row_exercise_frames", "check_dh_row"]
 
 
 # --- 5.1: the case of each x_i ------------------------------------------------------------------
-_CASE_WORDS = (("intersec", "intersect"), ("corta", "intersect"), ("parallel", "parallel"),
-               ("parale", "parallel"), ("skew", "skew"), ("cruza", "skew"), ("alabead", "skew"),
-               ("coinciden", "coincident"),
-               ("same line", "coincident"), ("misma recta", "coincident"))
-_CASE_NUMBERS = {1: "intersect", 2: "parallel", 3: "skew"}
-_NEGATION = re.compile(r"\b(not|no|never|neither|nor|cannot|can t|don t|doesn t|isn t|aren t|dont|doesnt|isnt|"
-                       r"arent|nunca|ni|tampoco)\b")
 _SAID = {"intersect": N_("z{p} and z{i} intersect"), "parallel": N_("z{p} and z{i} are parallel"),
          "skew": N_("z{p} and z{i} are skew"), "coincident": N_("z{p} and z{i} are the same line")}
 _ASK = N_("say which one case holds: 'intersect', 'parallel' or 'skew' (or 'case 1', 'case 2', 'case 3').")
 _CASE_NAMES = {"intersect": N_("intersect"), "parallel": N_("parallel"), "skew": N_("skew"),
                "coincident": N_("coincident")}
-
-
-def _cases_named(text: str) -> set:
-    """Every case a text names: by a word (English or Spanish) or as 'case 2' / 'caso 2' / '2'."""
-    named = {kind for stem, kind in _CASE_WORDS if stem in text}
-    named |= {_CASE_NUMBERS[int(n)] for n in re.findall(r"\b(?:case|caso)\s*([123])\b", text)}
-    if text in ("1", "2", "3"):
-        named.add(_CASE_NUMBERS[int(text)])
-    if named == {"parallel", "coincident"}:          # "parallel: the same line" is one case
-        named = {"coincident"}
-    return named
 
 
 def _read_case(value):
@@ -66,18 +47,19 @@ def _read_case(value):
         return _CASE_NUMBERS[number], ""
     if not isinstance(value, str):
         return None, _("cannot read {value}: {ask}").format(value=_short(value), ask=_(_ASK))
-    text, shown = words(value), repr(value.strip()[:40])
-    named = _cases_named(text)
+    shown = repr(value.strip()[:40])
+    reading = read_case_words(value)             # the grader reads x_cases with the same function
+    if reading.case is not None:
+        return reading.case, ""
+    named = reading.named
     if len(named) > 1:
         message = (_("your answer {shown} names two cases ({cases}): {ask}") if len(named) == 2 else
                    _("your answer {shown} names {count} cases ({cases}): {ask}"))
         return None, message.format(shown=shown, count=len(named), ask=_(_ASK), cases=_(" and ").join(
             _(_CASE_NAMES[k]) for k in sorted(named)))
-    if _NEGATION.search(text):
+    if reading.negated:
         return None, _("your answer {shown} says what does not hold: {ask}").format(shown=shown, ask=_(_ASK))
-    if not named:
-        return None, _("cannot read {value}: {ask}").format(value=_short(value), ask=_(_ASK))
-    return named.pop(), ""
+    return None, _("cannot read {value}: {ask}").format(value=_short(value), ask=_(_ASK))
 
 
 def _refutation(said: str, rel: Relation) -> str:

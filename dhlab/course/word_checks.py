@@ -8,26 +8,13 @@ answered in Spanish too (:func:`in_english`): "Azul" is "blue", "el eje z" is "z
 """
 from __future__ import annotations
 
-import unicodedata
-
 from ..i18n import _
 from . import check_options as teacher
 from .answers import is_unanswered
+from .case_words import words   # one normalisation for every word answer (and the grader's x_cases)
 from .feedback import Feedback, correct, short_repr, unanswered, wrong
 
 __all__ = ["check_choice", "check_terms", "words", "in_english"]
-
-
-def words(text) -> str:
-    """'End-Effector ' -> 'end effector'; accents dropped ('eslabón' -> 'eslabon')."""
-    text = unicodedata.normalize("NFKD", str(text))
-    text = "".join(ch for ch in text if not unicodedata.combining(ch)).casefold()
-    for sep in ("-", "_", "/", ".", ",", "!", "?", "¡", "¿", "'", '"'):
-        text = text.replace(sep, " ")
-    parts = text.split()
-    if parts and parts[0] in ("the", "a", "an", "el", "la", "los", "las", "un", "una", "unos", "unas"):
-        parts = parts[1:]
-    return " ".join(parts)
 
 
 # The Spanish of the words a choice may ask for, so that either language answers (after words():

@@ -118,7 +118,7 @@ class Answers:
     n_links: object = NOT_ANSWERED
     n_joints: object = NOT_ANSWERED
     joint_types: object = NOT_ANSWERED         # list of 'R'/'P'
-    x_cases: object = NOT_ANSWERED             # list of 'intersect'/'parallel'/'skew' (or None per entry)
+    x_cases: object = NOT_ANSWERED             # list of 'intersect'/'parallel'/'skew', None or Unreadable per entry
     link_points: object = NOT_ANSWERED         # list over links 0…n: list of (x, y, z) or a marker
     T: list = field(default_factory=lambda: [NOT_ANSWERED] * N_JOINTS)   # Row per T_i or a marker
     chain: object = NOT_ANSWERED               # list of Row
@@ -392,30 +392,41 @@ def _joint_types(value) -> list:
     return out
 
 
-_CASE_WORDS = {
-    "intersect": "intersect", "intersecting": "intersect", "intersects": "intersect",
-    "intersection": "intersect", "se intersecan": "intersect", "intersecan": "intersect",
-    "se cortan": "intersect", "cortan": "intersect",
-    "case 1": "intersect", "caso 1": "intersect", "1": "intersect",
-    "parallel": "parallel", "paralelos": "parallel", "paralelo": "parallel", "case 2": "parallel",
-    "caso 2": "parallel", "2": "parallel",
-    "skew": "skew", "neither": "skew", "case 3": "skew", "caso 3": "skew", "3": "skew",
-    "ni paralelos ni se intersecan": "skew", "cruzados": "skew", "se cruzan": "skew",
-    "coincident": "coincident", "coincide": "coincident", "coinciden": "coincident",
-}
-
-
 def _case(item):
-    if item is None:
+    """One entry of x_cases: a case, None (not answered) or, when it cannot be read, an
+    :class:`Unreadable` saying what was written: that entry's slip only, the others are scored.
+
+    Words are read as the lesson's exercise reads them (:mod:`dhlab.course.case_words`): English or
+    Spanish, small slips of spelling accepted ('paralel', 'intersects'); a word that is no case gets
+    a "did you mean"."""
+    if _is_ellipsis_only(item):
         return None
     if isinstance(item, (int, float)) and not isinstance(item, bool):
         item = str(int(item)) if float(item).is_integer() else str(item)
     if not isinstance(item, str):
-        raise _Bad(_("{value} is not a case: use 'intersect', 'parallel' or 'skew'").format(value=_show(item)))
-    key = re.sub(r"\s+", " ", item.strip().lower().replace("_", " "))
-    if key not in _CASE_WORDS:
-        raise _Bad(_("{value} is not a case: use 'intersect', 'parallel' or 'skew'").format(value=repr(item)))
-    return _CASE_WORDS[key]
+        return Unreadable(_("{value} is not a case: use 'intersect', 'parallel' or 'skew'").format(
+            value=_show(item)))
+    from ..course.case_words import read_case_words      # here: the runner loads this file as a script
+    reading = read_case_words(item)
+    if reading.case is not None:
+        return reading.case
+    return Unreadable(_case_problem(item, reading))
+
+
+def _case_problem(item: str, reading) -> str:
+    """Why a word is not read as a case, with the accepted words (in the student's language)."""
+    shown = repr(item.strip()[:40])
+    if len(reading.named) > 1:
+        from .language import case_word
+        return _("{value} names several cases ({cases}): write the one case that holds").format(
+            value=shown, cases=", ".join(case_word(kind) for kind in reading.named))
+    if reading.negated:
+        return _("{value} says what does not hold: write the case that does, 'intersect', 'parallel' or "
+                 "'skew'").format(value=shown)
+    why = _("{value} is not a case: use 'intersect', 'parallel' or 'skew'").format(value=shown)
+    if reading.suggestion:
+        why += "; " + _("did you mean {word!r}?").format(word=reading.suggestion)
+    return why
 
 
 def _x_cases(value, n: int) -> list:

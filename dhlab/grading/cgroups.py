@@ -30,7 +30,7 @@ import os
 import signal
 import time
 
-__all__ = ["SubmissionGroup", "create", "version", "GROUP_PARENT", "CGROUP_ROOT"]
+__all__ = ["SubmissionGroup", "create", "version", "leftovers", "remove_leftovers", "GROUP_PARENT", "CGROUP_ROOT"]
 
 CGROUP_ROOT = "/sys/fs/cgroup"
 GROUP_PARENT = "dhlab-grade"                 # our groups: <own group>/dhlab-grade/<name>
@@ -141,14 +141,14 @@ class SubmissionGroup:
         """End the group's processes and remove its directories (an empty group can be removed)."""
         self.kill_all()
         for folder in self.dirs:
-            for _ in range(50):
+            for _ in range(250):
                 try:
                     os.rmdir(folder)
                     break
                 except FileNotFoundError:
                     break
                 except OSError:
-                    time.sleep(0.02)      # the last process is still being reaped
+                    time.sleep(0.02)      # a killed process stays in its group until it is reaped
 
 
 def _make(folder: str) -> None:
@@ -208,6 +208,38 @@ def create(name: str, memory_mb: float, max_pids: int):
     except OSError as e:
         last_refusal = f"cgroup {kind} refused ({e.strerror or e})"
         return None
+
+
+def _parents() -> list:
+    """The folders our groups are made in, one per hierarchy we use."""
+    mounts = {"v2": [(CGROUP_ROOT, "")], "v1": [(os.path.join(CGROUP_ROOT, c), c) for c in ("memory", "pids")]}
+    return [_parent_dir(mount, controller) for mount, controller in mounts.get(version(), [])]
+
+
+def leftovers(name: str = "") -> list:
+    """The submission groups a killed grader or runner left: those called ``name``, or every
+    ``dhlab-grade/sub-*`` when no name is given."""
+    found = []
+    for parent in _parents():
+        try:
+            found += [os.path.join(parent, n) for n in sorted(os.listdir(parent))
+                      if (n == name if name else n.startswith("sub-"))]
+        except OSError:
+            pass
+    return found
+
+
+def remove_leftovers(name: str = "") -> list:
+    """End the processes of the groups a killed grader (or runner) left and remove the groups:
+    ``name`` after each submission, all of them for ``dhlab-grade --clean`` (when no grader runs);
+    the folders removed."""
+    removed = []
+    for folder in leftovers(name):
+        group = SubmissionGroup(version(), [folder], 0, 0)
+        group.remove()
+        if not os.path.exists(folder):
+            removed.append(folder)
+    return removed
 
 
 last_refusal = ""

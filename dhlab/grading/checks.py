@@ -194,6 +194,8 @@ def check_part1(answers: Answers, ref=None) -> PartResult:
             items.append(Item(label, None, _("not answered")))
         elif isinstance(cases, Unreadable):
             items.append(Item(label, False, cases.why))
+        elif isinstance(cases[i - 1], Unreadable):     # one word not read: this item's slip, not the list's
+            items.append(Item(label, False, cases[i - 1].why))
         elif cases[i - 1] in accepted:
             items.append(Item(f"{label}: {case_word(cases[i - 1])}", True))
         else:

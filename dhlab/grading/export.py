@@ -59,36 +59,69 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _lms(args) -> int:
+    """The Canvas or Moodle file (see :mod:`dhlab.grading.lms`). Only graded rows become grades;
+    the rows left out are listed, and an export that matches no student is an error (exit 2)."""
     from . import lms
-    from .gradebook import read_csv
-    import csv
-    with open(args.gradebook, newline="", encoding="utf-8") as f:
-        columns = csv.DictReader(f).fieldnames or []
-    rows = read_csv(args.gradebook, columns)
-    if "score" not in columns or not rows:
-        raise DHLabError(_("{file} is not a gradebook dhlab-grade wrote (no rows with a score column).").format(
-            file=args.gradebook))
+    rows = _gradebook_rows(args.gradebook)
     id_column, roster = lms.read_roster_rows(args.roster, args.id_column)
     files = {}
     if args.release is not None:
         from .grade_variants import _release_files
         files = _release_files(args.release, roster)
     by_id, unmatched, missing = lms.match(rows, roster, files)
+    skipped = lms.not_graded(rows)
+    if not by_id:
+        raise DHLabError(_("no graded row of {gradebook} is from a student of the roster {roster} (its id column "
+                           "is {column!r}; {count} rows, {skipped} not graded): nothing to import, no file written. "
+                           "Check --id-column, or pass --release when the files have the release's names.").format(
+            gradebook=args.gradebook, roster=args.roster, column=id_column, count=len(rows), skipped=len(skipped)))
     if args.target == "canvas":
         table = lms.canvas_rows(by_id, roster, id_column, args.assignment, rows[0]["max_score"])
     else:
         feedback = args.feedback_dir or args.gradebook.with_name(args.gradebook.stem + "_feedback")
         table = lms.moodle_rows(by_id, id_column, feedback)
-    lms.write(args.output, table)
+    lms.write(args.output, table, lms.GRADE_COLUMNS[args.target])
+    _report(args, by_id, unmatched, missing, skipped)
+    return 0
+
+
+def _gradebook_rows(path) -> list:
+    """The rows of the gradebook dhlab-grade wrote (with or without a BOM, cells unescaped), or a
+    clear error."""
+    import csv
+    from .gradebook import read_csv
+    try:
+        with open(path, newline="", encoding="utf-8-sig") as f:
+            columns = csv.DictReader(f).fieldnames or []
+    except (OSError, UnicodeDecodeError, csv.Error) as exc:
+        raise DHLabError(_("cannot read the gradebook {file}: {why}").format(
+            file=path, why=getattr(exc, "strerror", None) or exc)) from None
+    rows = read_csv(path, columns)
+    if "score" not in columns or "submission" not in columns or not rows:
+        raise DHLabError(_("{file} is not a gradebook dhlab-grade wrote (no rows with a score column).").format(
+            file=path))
+    return rows
+
+
+def _report(args, by_id, unmatched, missing, skipped) -> None:
+    """What was exported, and every row or student left out, and why."""
+    from .csvsafe import neutralised
     print(_("dhlab-grade export {target}: {count} grades in {file}.").format(
         target=args.target, count=len(by_id), file=args.output), file=sys.stderr)
+    if skipped:
+        print(_("Not exported, not graded ({count}: no grade, not a 0; grade them by hand, or again with "
+                "--resume): {names}").format(count=len(skipped), names=", ".join(skipped[:10])), file=sys.stderr)
     if unmatched:
         print(_("Not exported, no student of the roster ({count}): {names}").format(
             count=len(unmatched), names=", ".join(unmatched[:10])), file=sys.stderr)
     if missing:
         print(_("No graded submission ({count}, left as they are in the LMS): {names}").format(
             count=len(missing), names=", ".join(missing[:10])), file=sys.stderr)
-    return 0
+    formulas = [sid for sid in by_id if neutralised(sid) != sid]
+    if formulas:
+        print(_("Written with a leading ' so that no spreadsheet runs them as formulas ({count}): {names}; "
+                "the LMS may not match these ids: check their grades after the import.").format(
+            count=len(formulas), names=", ".join(formulas[:10])), file=sys.stderr)
 
 
 def _try(args) -> int:

@@ -7,11 +7,12 @@ any student code runs:
 
 1. **Who handed it in.** With ``--release`` (the folder ``dhlab-assign release`` wrote):
    the first of these that is a roster id, or the file name the release gave a roster id
-   (``_teacher/manifest.csv``): the submission file's stem (``ana.ipynb`` → ``ana``),
-   then the folder after ``submitted/`` in nbgrader's layout
-   (``submitted/ana/ps8/08_puma_assignment.ipynb`` → ``ana``). None of them: the status
-   ``unknown_student`` and no marks (rename the file ``<id>.ipynb``). Without
-   ``--release``: the folder after ``submitted/`` when there is one, else the file's stem.
+   (``_teacher/manifest.csv``): the folder after ``submitted/`` in nbgrader's layout
+   (``submitted/ana/ps8/08_puma_assignment.ipynb`` → ``ana``: the folder is the student, so
+   ana's folder holding ``bob.ipynb`` is ana's), then the submission file's stem
+   (``ana.ipynb`` → ``ana``). None of them: the status ``unknown_student`` and no marks
+   (rename the file ``<id>.ipynb``). Without ``--release``: the folder after ``submitted/``
+   when there is one, else the file's stem.
 2. **Which variant.** The notebook's signed record (``metadata["dhlab"]``) is verified
    for that student with the teacher's secret (:func:`dhlab.grading.variants.verify`):
    ``ok``, ``missing``, ``tampered`` or ``other_student`` (a classmate's notebook: the
@@ -40,6 +41,7 @@ from pathlib import Path, PurePosixPath
 
 from ..validation import DHLabError
 from . import variants as V
+from .csvsafe import restored
 from .language import N_, _
 
 __all__ = ["COLUMNS", "VariantSetup", "VariantInfo", "setup", "identify", "resolve", "columns", "status_note",
@@ -121,11 +123,12 @@ def _release_files(release: Path, records: dict) -> dict:
     from .release import safe_filename
     files = {safe_filename(sid): sid for sid in records}
     manifest = release / "_teacher" / "manifest.csv"
-    try:
-        with open(manifest, newline="", encoding="utf-8") as f:
+    try:                                                # with or without a BOM; cells unescaped (csvsafe)
+        with open(manifest, newline="", encoding="utf-8-sig") as f:
             for row in csv.DictReader(f):
-                if row.get("student_id") in records and row.get("file"):
-                    files[unicodedata.normalize("NFC", PurePosixPath(row["file"]).stem)] = row["student_id"]
+                sid, file = restored(row.get("student_id")), restored(row.get("file"))
+                if sid in records and file:
+                    files[unicodedata.normalize("NFC", PurePosixPath(file).stem)] = sid
     except (OSError, csv.Error, UnicodeDecodeError):
         pass                                            # the names derived from the ids are enough
     return files
@@ -150,20 +153,27 @@ def identify(vs: VariantSetup, rel_path) -> tuple:
     if not vs.records:
         return ((folder, _("the folder submitted/{folder}/").format(folder=folder)) if folder
                 else (stem, _("the file name")))
-    by_folder = _("the folder submitted/{folder}/").format(folder=folder)
-    for candidate, how in ((stem, _("the file name")), (folder, by_folder)):
-        if candidate is None:
-            continue
-        # a Mac writes 'é' as 'e' + a combining accent (NFD) in file names: compare composed (NFC)
-        for name in dict.fromkeys((candidate, unicodedata.normalize("NFC", candidate))):
-            if name in vs.records:
-                return name, how
-            if name in vs.files:
-                return vs.files[name], how
-    if folder:
-        return None, _("the file name {stem!r} and the folder {folder!r} match no student of the roster").format(
-            stem=stem, folder=folder)
+    if folder:                                  # nbgrader's layout: the folder is the student, whatever the file
+        student = _roster_id(vs, folder)
+        return (student, _("the folder submitted/{folder}/").format(folder=folder)) if student else (
+            None, _("the folder {folder!r} matches no student of the roster").format(folder=folder))
+    student = _roster_id(vs, stem)
+    if student:
+        return student, _("the file name")
     return None, _("the file name {stem!r} matches no student of the roster").format(stem=stem)
+
+
+def _roster_id(vs: VariantSetup, name: str) -> str | None:
+    """The roster id ``name`` is (an id, or the file name the release gave one), else None.
+    Compared composed (NFC): a Mac writes 'é' as 'e' + a combining accent (NFD) in file names,
+    and a roster typed on one may hold its ids so."""
+    composed = unicodedata.normalize("NFC", name)
+    for candidate in dict.fromkeys((name, composed)):
+        if candidate in vs.records:
+            return candidate
+        if candidate in vs.files:
+            return vs.files[candidate]
+    return next((sid for sid in vs.records if unicodedata.normalize("NFC", sid) == composed), None)
 
 
 def resolve(vs: VariantSetup, nb, rel_path) -> tuple:

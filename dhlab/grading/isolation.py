@@ -9,9 +9,11 @@ the submissions (:func:`setup`):
   lock on each of its users (:func:`claim`) until it ends, so two graders running at
   once (two classes, two terminals) never share a user, and neither kills the
   other's kernels. Each kernel runs
-  as its job's user inside a private mount namespace (:mod:`dhlab.grading.sandbox`):
-  it cannot write dhlab, see the submissions folder, read the gradebook or the other
-  submissions' copies (root's private folders), or signal the grader. After each
+  as its job's user in a private root of its own (:mod:`dhlab.grading.sandbox`: only the
+  system, Python and dhlab, read-only, and its own folder exist for it) with no network, and
+  each submission in a control group of its own (:mod:`dhlab.grading.cgroups`: memory and
+  processes limited for the whole submission). It cannot write dhlab, see any submission
+  but its own code, read the gradebook, the release or the secret, or signal the grader. After each
   submission, **every process of that user** is killed (:func:`kill_user`), so a
   process that left its process group (``setsid``, a double fork) dies too.
 * **not as root**: the kernels run as the grader's own user. The limits still
@@ -129,6 +131,9 @@ class Isolation:
         if user is not None:
             kill_user(user[1])
         kill_token(token)
+        if token and os.geteuid() == 0:           # the runner removes its group; a killed runner cannot
+            from .cgroups import remove_leftovers
+            remove_leftovers(f"sub-{token}")
         shutil.rmtree(workdir, ignore_errors=True)
         shutil.rmtree(f"{workdir}.root", ignore_errors=True)    # where its private root was mounted
 

@@ -7,9 +7,18 @@ Each gradebook row is matched to a student of the roster: the roster's id column
 ``dhlab-assign release``: ``id``, ``student_id``, ``student``, ``username``, ``login``, or
 ``--id-column``) must equal the student the submission is from — its file's name
 (``ana.ipynb``), the folder after nbgrader's ``submitted/``, or the release's file name of that
-id (``--release``). Which gradebook rows matched no student, and which students have no
-graded row, is reported; they are left out of the file (an LMS import then leaves those grades
-as they were). A row the grader failed on (no score) is never exported as 0.
+id (``--release``). In nbgrader's layout the folder is the student, whatever the file's name
+(``submitted/ana/ps8/bob.ipynb`` is ana's). Which gradebook rows
+matched no student, and which students have no graded row, is reported; they are left out of the
+file (an LMS import then leaves those grades as they were). A row that was not graded — the grader
+failed on it (no score), or it had no variant to grade against ("student not identified",
+``variant_source`` none) — is never exported as a grade: it is listed instead (:func:`not_graded`).
+
+The roster may be in Spanish: ``identificador``, ``usuario``… as ids (see
+:data:`dhlab.grading.release.ID_COLUMNS`; any other column, e.g. ``correo`` or ``email``, with
+``--id-column``), ``nombre`` and ``apellidos`` (or ``nombre completo``) as the name. The files
+written are UTF-8 with a BOM, so that Excel shows ``José``, and no cell runs as a formula
+(:mod:`dhlab.grading.csvsafe`: the grade column keeps its numbers, the rest is text).
 
 * **Canvas** (Grades → Import): ``Student, ID, SIS User ID, SIS Login ID, Section, <assignment>``,
   then a ``Points Possible`` row. Canvas matches a student by ``ID``, then ``SIS User ID`` or
@@ -23,22 +32,21 @@ as they were). A row the grader failed on (no score) is never exported as 0.
 """
 from __future__ import annotations
 
-import csv
-import io
 from pathlib import Path, PurePosixPath
 
 from ..validation import DHLabError
 
-__all__ = ["read_roster_rows", "match", "canvas_rows", "moodle_rows", "write", "CANVAS_COLUMNS"]
+__all__ = ["read_roster_rows", "match", "not_graded", "canvas_rows", "moodle_rows", "write", "CANVAS_COLUMNS"]
 
 CANVAS_COLUMNS = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"]
 POINTS_POSSIBLE = "    Points Possible"      # Canvas's own export writes it so
+GRADE_COLUMNS = {"canvas": [len(CANVAS_COLUMNS)], "moodle": [1]}    # the numeric columns of each file
 
 
 def read_roster_rows(path, id_column=None) -> tuple:
     """(the id column's name, {id: the roster row as a dict}), with clear errors (no such file, no
     id column, an empty or repeated id). Canvas's ``Points Possible`` row is not a student."""
-    from .release import _id_column, csv_rows
+    from .release import _id_column, checked_id, csv_rows, look_alikes
     path = Path(path)
     rows = csv_rows(path)
     if len(rows) < 2:
@@ -50,21 +58,21 @@ def read_roster_rows(path, id_column=None) -> tuple:
         record = {h: (row[k].strip() if k < len(row) else "") for k, h in enumerate(header)}
         if row and row[0].strip() == POINTS_POSSIBLE.strip():
             continue
-        sid = record[column]
-        if not sid:
-            raise DHLabError(f"roster {path.name}, row {line}: the id column {column!r} is empty.")
+        sid = checked_id(record[column], path.name, line, column)
         if sid in out:
             raise DHLabError(f"roster {path.name}: the id {sid!r} appears twice; every student needs a different id.")
         out[sid] = record
+    look_alikes(list(out), path.name)
     return column, out
 
 
 def _student_of(row: dict, ids, files: dict) -> str | None:
-    """The roster id a gradebook row is from: its variant columns' identification aside, the
-    file's stem, then the folder after ``submitted/`` (a release file name counts as its id)."""
+    """The roster id a gradebook row is from: in nbgrader's layout the folder after
+    ``submitted/`` (the folder is the student, whatever the file's name), else the file's
+    stem (a release file name counts as its id)."""
     parts = PurePosixPath(row.get("file") or row["submission"] + ".ipynb").parts
-    candidates = [PurePosixPath(parts[-1]).stem]
-    candidates += [parts[i + 1] for i, p in enumerate(parts[:-2]) if p == "submitted"]
+    folders = [parts[i + 1] for i, p in enumerate(parts[:-2]) if p == "submitted"]
+    candidates = folders[:1] or [PurePosixPath(parts[-1]).stem]
     for c in candidates:
         if c in ids:
             return c
@@ -74,14 +82,15 @@ def _student_of(row: dict, ids, files: dict) -> str | None:
 
 
 def match(gradebook_rows, roster: dict, files=None) -> tuple:
-    """({roster id: gradebook row}, [submissions matching no student], [ids with no graded row])."""
+    """({roster id: gradebook row}, [submissions matching no student], [ids with no graded row]).
+    Rows that were not graded (:func:`not_graded`) are never a student's grade."""
     files = files or {}
     by_id, unmatched = {}, []
     for row in gradebook_rows:
         sid = _student_of(row, roster, files)
         if sid is None:
             unmatched.append(row["submission"])
-        elif row.get("score", "") != "":
+        elif _graded(row):
             if sid in by_id:
                 raise DHLabError(f"two submissions are from {sid!r}: {by_id[sid]['submission']!r} and "
                                  f"{row['submission']!r}; keep one in the gradebook and export again.")
@@ -90,13 +99,33 @@ def match(gradebook_rows, roster: dict, files=None) -> tuple:
     return by_id, unmatched, missing
 
 
+def _graded(row: dict) -> bool:
+    """Whether a gradebook row holds a grade: it has a score, and it was run against a variant
+    (with personal variants, ``variant_source`` 'none' is a submission not run: its 0 is no grade)."""
+    return row.get("score", "") != "" and row.get("variant_source", "") != "none"
+
+
+def not_graded(gradebook_rows) -> list:
+    """The submissions whose rows hold no grade (the grader failed, or the student was not
+    identified): the teacher grades them by hand or grades them again."""
+    return [row["submission"] for row in gradebook_rows if not _graded(row)]
+
+
+FULL_NAMES = ("student", "name", "full name", "fullname", "nombre completo", "estudiante", "alumno", "alumna")
+FIRST_NAMES = ("first name", "firstname", "given name", "nombre", "nombres")
+LAST_NAMES = ("last name", "surname", "family name", "apellidos", "apellido")
+
+
 def _name(record: dict) -> str:
-    lowered = {k.lower(): v for k, v in record.items()}
-    for key in ("student", "name", "full name", "fullname"):
-        if lowered.get(key):
-            return lowered[key]
-    first, last = lowered.get("first name") or lowered.get("firstname"), lowered.get("last name") or lowered.get("surname")
-    return f"{last}, {first}" if first and last else ""
+    """The student's name for Canvas: a full-name column, else 'last, first' (English or Spanish
+    column names: ``nombre`` and ``apellidos`` give 'García López, Ana')."""
+    lowered = {k.strip().lower(): v for k, v in record.items()}
+    full = next((lowered[k] for k in FULL_NAMES if lowered.get(k)), "")
+    first = next((lowered[k] for k in FIRST_NAMES if lowered.get(k)), "")
+    last = next((lowered[k] for k in LAST_NAMES if lowered.get(k)), "")
+    if full:
+        return full
+    return f"{last}, {first}" if first and last else first or last
 
 
 def canvas_rows(by_id: dict, roster: dict, id_column: str, assignment: str, max_score) -> list:
@@ -126,9 +155,10 @@ def moodle_rows(by_id: dict, id_column: str, feedback_dir=None) -> list:
     return rows
 
 
-def write(path, rows) -> None:
-    """A CSV file, UTF-8, comma-separated, every field quoted only when it must be."""
+def write(path, rows, numeric_columns=()) -> None:
+    """A CSV file for Excel and the LMS: UTF-8 with a BOM, comma-separated, every field quoted
+    only when it must be, no cell a formula (``numeric_columns``: the indexes of the grade
+    columns, whose numbers are kept; see :mod:`dhlab.grading.csvsafe`)."""
+    from .csvsafe import csv_text
     from .gradebook import write_atomic
-    buffer = io.StringIO()
-    csv.writer(buffer, lineterminator="\r\n").writerows(rows)
-    write_atomic(path, buffer.getvalue())
+    write_atomic(path, csv_text(rows, numeric_columns))

@@ -5,16 +5,26 @@
                          [--language en|es]
 
 For every row of the roster (a CSV file with a header; the id column is ``id``,
-``student_id``, ``student``, ``username`` or ``login``, or the one ``--id-column`` names)
-it draws the student's variant (:func:`dhlab.grading.variants.roster_variants`), signs
+``student_id``, ``student``, ``username`` or ``login`` — in Spanish ``identificador``,
+``id_estudiante``, ``estudiante``, ``usuario``… (:data:`ID_COLUMNS`) — or the one ``--id-column``
+names) it draws the student's variant (:func:`dhlab.grading.variants.roster_variants`), signs
 it with the teacher's secret, and writes ``release/<id>.ipynb``: the generated student
 notebook (``notebooks/08_puma_assignment.ipynb``) with a "Your robot" section — the
 robot's figure (drawn when the student runs the cell; stored in the notebook with
 ``--figures``), its axes table and the points table — and the signed record in the
 notebook's metadata (``metadata["dhlab"]``). The same roster and secret always give
 byte-identical notebooks. ``release/_teacher/`` keeps the teacher's copy of every
-variant (``variants.json``) and which file is whose (``manifest.csv``): hand out only
-the ``.ipynb`` files.
+variant (``variants.json``) and which file is whose (``manifest.csv``, UTF-8 with a BOM for
+Excel, no cell a formula: :mod:`dhlab.grading.csvsafe`): hand out only the ``.ipynb`` files.
+
+**Releasing again into the same folder adds, never replaces.** The teacher's records there are
+kept: a student already released keeps the variant recorded (their notebook is written again
+from it), a new student gets a new variant, different from every one in the folder, and both
+files then list everyone. A folder released with another secret is refused
+(:func:`previous_release`). **Ids** holding control characters (NUL, a line break…), or two ids
+that are the same text written two ways (``José`` composed, NFC, and decomposed, NFD), are
+refused with the rows named (:func:`checked_id`, :func:`look_alikes`); file names never start
+with ``-`` nor are a Windows device name (``CON``, ``nul.txt``…) (:func:`safe_filename`).
 
 **The student's language** (:mod:`dhlab.grading.release_language`): ``--language es`` releases
 the notebooks in Spanish; a roster column ``language`` (or ``idioma``) with ``en``/``es`` per
@@ -39,7 +49,7 @@ import json
 import re
 import sys
 import unicodedata
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 
 from ..course.family_notebook import SEAM_CELL_ID, prepare_submission, release_notebook, seam_source
 from ..validation import DHLabError
@@ -47,13 +57,15 @@ from . import variants as V
 from .language import _, language_option
 from .release_language import default_language, in_language, in_spanish, mark_language, roster_languages
 
-__all__ = ["read_roster", "safe_filename", "release_notebook", "release", "main", "TEMPLATE",
+__all__ = ["read_roster", "checked_id", "look_alikes", "previous_release", "safe_filename", "release_notebook", "release", "main", "TEMPLATE",
            "ID_COLUMNS", "SEAM_CELL_ID", "DEFAULT_SECRET_FILE", "seam_source", "load_teacher_records",
            "submission_variant", "prepare_submission"]
 
 _ROOT = Path(__file__).resolve().parents[2]
 TEMPLATE = _ROOT / "notebooks" / "08_puma_assignment.ipynb"
-ID_COLUMNS = ("id", "student_id", "student", "username", "login")
+ID_COLUMNS = ("id", "student_id", "student", "username", "login",
+              "identificador", "id_estudiante", "id estudiante", "estudiante", "usuario", "nombre de usuario",
+              "id number", "número de id")
 DEFAULT_SECRET_FILE = Path("dhlab-secret.key")
 _RESERVED = {"CON", "PRN", "AUX", "NUL", *(f"COM{i}" for i in range(1, 10)), *(f"LPT{i}" for i in range(1, 10))}
 
@@ -87,9 +99,7 @@ def read_roster(path, id_column: str | None = None) -> list:
     column = _id_column(header, id_column, path)
     ids, where = [], {}
     for line, row in enumerate(rows[1:], start=2):
-        sid = row[column].strip() if column < len(row) else ""
-        if not sid:
-            raise DHLabError(f"roster {path.name}, row {line}: the id column {header[column]!r} is empty.")
+        sid = checked_id(row[column] if column < len(row) else "", path.name, line, header[column])
         if sid in where:
             raise DHLabError(f"roster {path.name}: the id {sid!r} appears twice (rows {where[sid]} and {line}); "
                              "every student needs a different id.")
@@ -97,15 +107,65 @@ def read_roster(path, id_column: str | None = None) -> list:
         ids.append(sid)
     if not ids:
         raise DHLabError(f"the roster {str(path)!r} has a header but no students.")
+    look_alikes(where, path.name)
     return ids
 
 
+def _unsafe_character(text: str) -> str | None:
+    """The first character of ``text`` an id must not hold, as 'U+0000', else None: control
+    characters (NUL, tab, line breaks…) and invisible format characters (a right-to-left
+    override, a zero-width space), which make two different ids look the same. The joiners
+    some scripts need (U+200C, U+200D) are allowed."""
+    for ch in text:
+        kind = unicodedata.category(ch)
+        if kind in ("Cc", "Zl", "Zp") or (kind == "Cf" and ch not in "\u200c\u200d"):
+            return f"U+{ord(ch):04X}"
+    return None
+
+
+def checked_id(value: str, roster_name: str, line: int, column: str) -> str:
+    """One roster cell as a student id: stripped, not empty, no control character (a clear
+    error naming the row otherwise: such an id is a file name and a gradebook cell later)."""
+    sid = value.strip()
+    if not sid:
+        raise DHLabError(f"roster {roster_name}, row {line}: the id column {column!r} is empty.")
+    bad = _unsafe_character(sid)
+    if bad:
+        raise DHLabError(_("roster {name}, row {line}: the id {sid!r} holds the invisible or control character "
+                           "{char}; retype the id in the roster without it.").format(
+            name=roster_name, line=line, sid=sid, char=bad))
+    return sid
+
+
+def look_alikes(where, roster_name: str) -> None:
+    """Refuse two ids that are the same text in two Unicode forms (``José`` typed with one 'é',
+    NFC, and with 'e' + an accent, NFD, as a Mac may write it): they look alike everywhere,
+    but would be two students. ``where``: id -> its row (or a list of ids)."""
+    rows = where if isinstance(where, dict) else {sid: None for sid in where}
+    seen = {}
+    for sid, line in rows.items():
+        key = unicodedata.normalize("NFC", sid)
+        if key in seen:
+            first, first_line = seen[key]
+            at = _(" (rows {first} and {second})").format(first=first_line, second=line) if line else ""
+            raise DHLabError(_("roster {name}: the ids {first!r} and {second!r} are the same name written two ways "
+                               "(Unicode NFC and NFD){at}: two students to the grader, one to the eye; retype one of them "
+                               "in the roster so that both are spelled the same way, or make them different ids.").format(
+                name=roster_name, first=first, second=sid, at=at))
+        seen[key] = (sid, line)
+
+
+def _column_key(name: str) -> str:
+    """A column's name as compared: stripped, lower case, composed ('Número de ID' → 'número de id')."""
+    return unicodedata.normalize("NFC", name.strip().lower())
+
+
 def _id_column(header, id_column, path) -> int:
-    lowered = [h.lower() for h in header]
+    lowered = [_column_key(h) for h in header]
     if id_column is not None:
-        if id_column.lower() not in lowered:
+        if _column_key(id_column) not in lowered:
             raise DHLabError(f"the roster {path.name} has no column {id_column!r}; its columns are {header}.")
-        return lowered.index(id_column.lower())
+        return lowered.index(_column_key(id_column))
     for name in ID_COLUMNS:
         if name in lowered:
             return lowered.index(name)
@@ -148,11 +208,19 @@ def safe_filename(student_id: str) -> str:
     >>> safe_filename("Łukasz.Øster"), safe_filename("Иван.Петров"), safe_filename("李雷")
     ('Lukasz.Oster-dead72', 'Ivan.Petrov-519ffb', 'student-3a4732')
     """
-    if re.fullmatch(r"[A-Za-z0-9_-][A-Za-z0-9._-]{0,79}", student_id) and student_id.upper() not in _RESERVED:
+    if re.fullmatch(r"[A-Za-z0-9_][A-Za-z0-9._-]{0,79}", student_id) and not _reserved(student_id):
         return student_id
     spelled = "".join(_readable(ch) for ch in unicodedata.normalize("NFC", student_id))
-    slug = re.sub(r"_+", "_", spelled).strip("._")[:60] or "student"
-    return f"{slug}-{hashlib.sha256(student_id.encode('utf-8')).hexdigest()[:6]}"
+    slug = re.sub(r"_+", "_", spelled).strip("._-")[:60] or "student"
+    name = f"{slug}-{hashlib.sha256(student_id.encode('utf-8')).hexdigest()[:6]}"
+    return f"_{name}" if _reserved(name) else name          # 'nul.txt-1a2b3c' is still NUL to Windows
+
+
+def _reserved(name: str) -> bool:
+    """Whether Windows reserves the file name ``name`` (+ '.ipynb'): a device name, alone or
+    before any extension ('CON', 'nul.txt', 'com1.x'). A name starting with '-' (read as an
+    option by a shell command) never reaches here: it is not plain, so it is spelled and hashed."""
+    return name.split(".")[0].rstrip(" ").upper() in _RESERVED
 
 
 # --- the notebook ------------------------------------------------------------------------------------
@@ -181,26 +249,26 @@ def _dumps(nb: dict) -> str:
     return json.dumps(nb, sort_keys=True, indent=1, ensure_ascii=False) + "\n"
 
 
+MANIFEST_COLUMNS = ["student_id", "file", "family", "fingerprint", "language"]
+
+
 def release(roster, out, secret: bytes, families=None, id_column=None, template=TEMPLATE,
             figures: bool = False, language: str | None = None) -> list:
     """Write one notebook per student of ``roster`` into ``out`` (see the module); returns
-    the manifest rows (student id, file, family, fingerprint, language). ``language``: the
-    notebooks' language where the roster has no language column (default ``DHLAB_LANGUAGE``, else 'en')."""
+    the manifest rows of this roster (student id, file, family, fingerprint, language).
+    ``language``: the notebooks' language where the roster has no language column (default
+    ``DHLAB_LANGUAGE``, else 'en'). An earlier release in ``out`` is added to, never replaced."""
     ids = read_roster(roster, id_column)
     languages = roster_languages(csv_rows(Path(roster)), ids, default_language(language), Path(roster).name)
-    names = {}
-    for sid in ids:
-        name = safe_filename(sid)
-        if name.lower() in names:                            # case-insensitive file systems
-            raise DHLabError(f"the ids {names[name.lower()]!r} and {sid!r} would share the file {name}.ipynb.")
-        names[name.lower()] = sid
-    tpl = _load_template(template)
-    chosen = V.roster_variants(ids, secret, families)
     out = Path(out)
+    earlier, earlier_rows = previous_release(out, secret)
+    _check_file_names(ids, earlier_rows)
+    tpl = _load_template(template)
+    chosen = _variants(ids, secret, families, earlier)
     (out / "_teacher").mkdir(parents=True, exist_ok=True)
-    manifest, teacher, notes = [], {}, set()
+    manifest, teacher, notes = [], dict(earlier), set()
     for sid in ids:
-        record = V.sign(chosen[sid], sid, secret)
+        record = earlier.get(sid) or V.sign(chosen[sid], sid, secret)
         with in_language(languages[sid]):               # the figure's and tables' words too
             nb, cell_notes = release_notebook(tpl, record, figures)
             if languages[sid] == "es":
@@ -213,17 +281,101 @@ def release(roster, out, secret: bytes, families=None, id_column=None, template=
         manifest.append({"student_id": sid, "file": file, "family": chosen[sid].family, "fingerprint": fp,
                          "language": languages[sid]})
         teacher[sid] = record
-    buffer = io.StringIO()
-    writer = csv.DictWriter(buffer, ["student_id", "file", "family", "fingerprint", "language"],
-                            lineterminator="\n")
-    writer.writeheader()
-    writer.writerows(manifest)
-    (out / "_teacher" / "manifest.csv").write_text(buffer.getvalue(), encoding="utf-8")
-    (out / "_teacher" / "variants.json").write_text(
-        json.dumps(teacher, sort_keys=True, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
+    _write_teacher_records(out, teacher, _merged(earlier_rows, manifest))
+    kept = [sid for sid in ids if sid in earlier]
+    if earlier:
+        notes.add(_("{folder} already held a release of {count} students: it was added to, not replaced; "
+                    "{kept} of this roster were released there before and keep their robots, {new} are new.").format(
+            folder=out, count=len(earlier), kept=len(kept), new=len(ids) - len(kept)))
     for note in sorted(notes):
         print(_("dhlab-assign: note: {note}").format(note=note), file=sys.stderr)
     return manifest
+
+
+def previous_release(out: Path, secret: bytes) -> tuple:
+    """(id -> signed record, manifest rows) of an earlier release into ``out`` (empty when there
+    is none). Refused with a clear error when its records were signed with another secret: two
+    secrets in one folder would make half the class unverifiable."""
+    records_file = out / "_teacher" / "variants.json"
+    if not records_file.exists():
+        return {}, []
+    records = load_teacher_records(records_file)
+    foreign = [sid for sid, record in records.items() if not V.verify(record, sid, secret).ok]
+    if foreign:
+        raise DHLabError(_("{folder} already holds a release whose variants do not verify with this secret "
+                           "({count} of {total}, first {first!r}): release into a new folder, or pass the "
+                           "--secret-file that release was made with. One folder never mixes two secrets.").format(
+            folder=out, count=len(foreign), total=len(records), first=foreign[0]))
+    rows = {row["student_id"]: row for row in _manifest_rows(out / "_teacher" / "manifest.csv")
+            if row.get("student_id") in records}
+    for sid, record in records.items():                  # a student the manifest lost: rebuilt from the record
+        if sid not in rows:
+            variant = V.Variant.from_dict(record["variant"])
+            rows[sid] = {"student_id": sid, "file": f"{safe_filename(sid)}.ipynb", "family": variant.family,
+                         "fingerprint": V.fingerprint(variant), "language": ""}
+    return records, list(rows.values())
+
+
+def _manifest_rows(path) -> list:
+    """The rows of a manifest this module wrote (dicts; [] when there is none), cells unescaped."""
+    from .csvsafe import restored
+    try:
+        with open(path, newline="", encoding="utf-8-sig") as f:
+            return [{k: restored(v) for k, v in row.items() if k is not None} for row in csv.DictReader(f)]
+    except (OSError, csv.Error, UnicodeDecodeError):
+        return []
+
+
+def _check_file_names(ids, earlier_rows) -> None:
+    """Two students never share a file, even on a file system that ignores case (Windows, macOS),
+    nor a new student the file of one released earlier."""
+    names = {PurePosixPath(row["file"]).stem.lower(): row["student_id"] for row in earlier_rows}
+    for sid in ids:
+        name = safe_filename(sid)
+        if names.get(name.lower(), sid) != sid:
+            raise DHLabError(f"the ids {names[name.lower()]!r} and {sid!r} would share the file {name}.ipynb.")
+        names[name.lower()] = sid
+
+
+def _variants(ids, secret: bytes, families, earlier: dict) -> dict:
+    """id -> Variant: a student released before keeps the recorded variant; a new one gets a
+    draw different from every variant in the folder (with no earlier release: exactly
+    :func:`dhlab.grading.variants.roster_variants`)."""
+    if not earlier:
+        return V.roster_variants(ids, secret, families)
+    chosen = {sid: V.Variant.from_dict(record["variant"]) for sid, record in earlier.items()}
+    seen = {V.fingerprint(v) for v in chosen.values()}
+    for sid in ids:
+        if sid in chosen:
+            continue
+        for attempt in range(50):
+            v = V.student_variant(sid, secret, families, attempt)
+            if V.fingerprint(v) not in seen:
+                break
+        else:
+            raise DHLabError(f"could not draw a variant for {sid!r} different from every classmate's.")
+        seen.add(V.fingerprint(v))
+        chosen[sid] = v
+    return chosen
+
+
+def _merged(earlier_rows, rows) -> list:
+    """The manifest: the earlier rows in their order (updated where released again), then the new."""
+    merged = {row["student_id"]: row for row in earlier_rows}
+    merged.update((row["student_id"], row) for row in rows)
+    return list(merged.values())
+
+
+def _write_teacher_records(out: Path, teacher: dict, manifest: list) -> None:
+    """``_teacher/variants.json`` and ``_teacher/manifest.csv``, each written atomically (a
+    stopped release leaves the old file or the new one). The manifest is for Excel: UTF-8 with
+    a BOM, every cell text and escaped when it starts like a formula (an id ``=1+2``)."""
+    from .csvsafe import csv_text
+    from .gradebook import write_atomic
+    table = [MANIFEST_COLUMNS] + [[row.get(c, "") for c in MANIFEST_COLUMNS] for row in manifest]
+    write_atomic(out / "_teacher" / "variants.json",
+                 json.dumps(teacher, sort_keys=True, indent=1, ensure_ascii=False) + "\n")
+    write_atomic(out / "_teacher" / "manifest.csv", csv_text(table))
 
 
 # --- what the grader needs (the integration seam) ---------------------------------------------------

@@ -8,7 +8,8 @@ The grader's runner starts each student kernel as::
 Before IPython starts, this process lowers its own limits with
 :func:`resource.setrlimit`; the kernel inherits them:
 
-* ``RLIMIT_AS`` (address space): an allocation beyond it fails with ``MemoryError``
+* ``RLIMIT_AS`` (address space; with a control group only a backstop at 4 × ``--memory-mb``):
+  an allocation beyond it fails with ``MemoryError``
   in the student's cell instead of eating the machine's memory;
 * ``RLIMIT_CPU``: a backstop that ends a kernel still spinning long after the
   grader stopped waiting for it (the runner's wall-clock limit acts first);
@@ -20,15 +21,19 @@ Soft and hard limits are set equal, so an ordinary user's code cannot raise them
 again.
 
 **Isolation** (``--uid``/``--gid``, when the grader runs as root): before the kernel
-starts, this process enters a private network namespace (no network: the kernel talks to
-its runner over Unix sockets in its own folder) and a private mount namespace, empties the folders it is told
-to hide (``--hide``: the submissions), makes the Python installation and dhlab
-reachable even when they sit under a folder other users cannot enter (``/root``),
-mounts a ``/proc`` that shows only the kernel user's own processes, caps that user's
-number of processes (``RLIMIT_NPROC``), and then becomes the unprivileged user
-``--uid`` for good. The kernel then cannot write dhlab, read the other submissions or
-the gradebook, or signal the grader; every process it starts belongs to that user, so
-the grader can end them all, including those that left the process group.
+starts, this process joins the submission's control group (``--group``, made by the runner:
+:mod:`dhlab.grading.cgroups`: memory and processes limited for the whole submission, children
+included), enters private mount, IPC and network namespaces and **a root of its own**
+(:func:`enter_sandbox`): a new tmpfs holding only the system's programs and libraries, ``/etc``,
+the Python installation and dhlab's own folder — all read-only — the kernel's own folder
+(writable), a private ``/tmp`` and ``/dev/shm`` of ``--tmp-mb`` each (they vanish with the
+kernel), a few devices and a ``/proc`` that shows only the kernel user's processes. Then it
+becomes the unprivileged user ``--uid`` for good. So the kernel cannot see the submissions, the
+release and its secret, the gradebook, the teacher's home or any socket at a file path,
+wherever the teacher keeps them — what is not bound in does not exist for it, and a course
+installed in a folder other users cannot enter (``/root``, a ``mktemp -d`` folder) is reachable
+all the same. It has no network, cannot write dhlab or signal the grader, and every process it
+starts belongs to that user and that control group, so the grader can end them all.
 
 It also caps what one cell may print (``--output-mb``): beyond it, the kernel drops the
 cell's further ``print`` output and says so once (:data:`OUTPUT_LIMIT_NOTE`). Without
@@ -153,6 +158,9 @@ def _needed_paths() -> list:
     editable install's checkout holds the notebooks and tests, a teacher's may hold more)."""
     import importlib.util
     paths = {sys.base_prefix, sys.prefix, sys.exec_prefix, os.path.dirname(os.path.realpath(sys.executable))}
+    # the packages' folders on the path, also those a .pth file reaches (a virtual environment
+    # built on another one's packages) — never a plain folder on the path (the current folder)
+    paths |= {p for p in sys.path if os.path.basename(p.rstrip("/")) in ("site-packages", "dist-packages")}
     spec = importlib.util.find_spec("dhlab")
     if spec and spec.submodule_search_locations:
         paths.add(os.path.realpath(list(spec.submodule_search_locations)[0]))

@@ -6,7 +6,11 @@ its code cells, numbered as in Jupyter. So:
 
 * what a notebook printed or drew is not the submission: a correct notebook with
   50 MB of saved outputs is graded like any other (the *code* is limited, with
-  :data:`dhlab.grading.runner.MAX_CODE_BYTES`);
+  :data:`dhlab.grading.notebook_code.MAX_CODE_BYTES`);
+* the memory one file may take is bounded: it is measured before its JSON is read
+  (:func:`dhlab.grading.notebook_code.check_notebook_bytes`: at most 100 MB and a million
+  JSON values), read once, and a file the grader still cannot read is that file's row (its
+  name and why), never the end of the batch;
 * a submission that edits a classmate's file, or its own, while the batch runs
   changes nothing: the copies were made before anything ran;
 * the gradebook records each file's SHA-256, so ``--resume`` regrades a file that
@@ -28,8 +32,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .language import _
-from .release_language import raw_notebook_language
-from .runner import MAX_NOTEBOOK_BYTES, NotebookError, read_code_cells
+from .notebook_code import (NotebookError, check_notebook_bytes, code_cells_of, read_notebook_bytes,
+                            read_notebook_json)
+from .release_language import notebook_language
 
 __all__ = ["Staged", "stage", "stage_all", "find_submissions"]
 
@@ -44,6 +49,7 @@ class Staged:
     error: str = ""          # why it cannot be run
     variant: object = None   # with variants: the VariantInfo it is graded by (dhlab.grading.grade_variants)
     language: str = ""       # the student's language ('en'/'es'; '' when the notebook does not say)
+    grader_fault: bool = False   # True when ``error`` is the grader's failure (out of memory, disk full), not the file's
 
 
 def find_submissions(folder: Path) -> list:
@@ -60,43 +66,70 @@ def find_submissions(folder: Path) -> list:
 def stage(path: Path, folder: Path, into: Path, index: int, resolve=None) -> Staged:
     """Read ``path`` once; write its code-only copy into ``into``. ``resolve(notebook,
     submission file)`` (variants): (the notebook to run, its VariantInfo); a VariantInfo
-    without a variant means the submission is not run."""
+    without a variant means the submission is not run.
+
+    Whatever the file holds, the answer is a :class:`Staged` naming it: a file too big to read
+    safely, or one the grader runs out of memory on, is that file's row, and the class is graded."""
     rel = path.relative_to(folder)
     submission, file = rel.with_suffix("").as_posix(), rel.as_posix()
     try:
-        size = path.stat().st_size
-        if size > MAX_NOTEBOOK_BYTES:
-            raise NotebookError(_("the file is {size} MB, more than {limit} MB").format(
-                size=f"{size / 1e6:.0f}", limit=f"{MAX_NOTEBOOK_BYTES / 1e6:.0f}"))
-        raw = path.read_bytes()
+        return _stage(path, submission, file, into, index, resolve)
+    except (MemoryError, RecursionError) as e:
+        kind = _("out of memory") if isinstance(e, MemoryError) else _("nested too deeply")
+        return Staged(submission, file, "", None, _("the grader could not read this file ({why}); clear its outputs "
+                                                    "and try again, or grade it on a machine with more memory").format(
+            why=kind), grader_fault=isinstance(e, MemoryError))
+
+
+def _stage(path: Path, submission: str, file: str, into: Path, index: int, resolve) -> Staged:
+    try:
+        raw = read_notebook_bytes(path)
     except OSError as e:
         return Staged(submission, file, "", None, _("cannot read the file ({error})").format(error=e.strerror or e))
     except NotebookError as e:
         return Staged(submission, file, "", None, str(e))
     digest = hashlib.sha256(raw).hexdigest()
-    language = raw_notebook_language(raw) or ""
+    try:
+        check_notebook_bytes(raw)           # before any JSON is read: the memory one file may take is bounded
+    except NotebookError as e:
+        return Staged(submission, file, digest, None, str(e))
+    try:
+        nb, problem = read_notebook_json(raw, checked=True), ""
+    except NotebookError as e:
+        nb, problem = None, str(e)
+    del raw                                 # the notebook is read once: its bytes are not needed any more
+    language = notebook_language(nb) or ""
     info = None
     if resolve is not None:
-        from .grade_variants import read_notebook
-        nb = read_notebook(raw)
         prepared, info = resolve(nb, file)
         if info.variant is None:
             return Staged(submission, file, digest, None, variant=info, language=language)
-        if isinstance(prepared, dict) and prepared is not nb:
-            raw = json.dumps(prepared).encode("utf-8")
+        nb = prepared
     try:
-        cells = read_code_cells(raw=raw)
+        if problem:
+            raise NotebookError(problem)
+        cells = code_cells_of(nb)
     except NotebookError as e:
         return Staged(submission, file, digest, None, str(e), info, language)
+    del nb
+    try:
+        copy = _write_copy(cells, into / f"{index:05d}.ipynb")
+    except OSError as e:
+        return Staged(submission, file, digest, None, _("the grader could not write its copy of this file ({error})")
+                      .format(error=e.strerror or e), info, language, grader_fault=True)
+    return Staged(submission, file, digest, copy, variant=info, language=language)
+
+
+def _write_copy(cells: list, copy: Path) -> Path:
+    """The code-only copy: the code cells at their own numbers, empty markdown cells between."""
     numbered = dict(cells)
     last = max(numbered, default=0)
     nb = {"nbformat": 4, "nbformat_minor": 5, "metadata": {},
           "cells": [{"cell_type": "code", "metadata": {}, "source": numbered[k], "outputs": [],
                      "execution_count": None} if k in numbered else
                     {"cell_type": "markdown", "metadata": {}, "source": ""} for k in range(1, last + 1)]}
-    copy = into / f"{index:05d}.ipynb"
     copy.write_text(json.dumps(nb), encoding="utf-8")
-    return Staged(submission, file, digest, copy, variant=info, language=language)
+    return copy
 
 
 def stage_all(folder: Path, paths, resolve=None) -> tuple:
