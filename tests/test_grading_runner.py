@@ -163,7 +163,8 @@ def test_scores_of_right_and_wrong_answers(batch, name, parts, status):
     ("hostile_huge_code", [0, 0, 0], ["invalid notebook", "code too large", "outputs do not count"]),
     ("hostile_monkeypatch", [2, 0, 5 * 5 / 7], ["modifies dhlab, ignored"]),
     ("hostile_weird_values", [0, 0, 0], ["unreadable answers: n_links"]),
-    ("hostile_tampers_package", FULL, ["PermissionError"] if AS_ROOT else []),
+    # as root the package is bound read-only into the kernel's private root
+    ("hostile_tampers_package", FULL, ["Read-only file system"] if AS_ROOT else []),
     ("hostile_setsid_escapee", FULL, []),
     ("hostile_edits_classmates", FULL, []),
     ("hostile_kills_everything", FULL, []),

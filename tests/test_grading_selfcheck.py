@@ -1,11 +1,11 @@
 """The grader checks itself before it grades anyone, and `dhlab-grade --clean` tidies up after a killed one.
 
-The bug this reproduces: run as root with TMPDIR pointing into a 0700 folder (as `mktemp -d`
+The bug this first reproduced: run as root with TMPDIR pointing into a 0700 folder (as `mktemp -d`
 makes), every submission came back "grader error: RuntimeError: Kernel died before replying
-to kernel_info" — the kernels' users could not enter their own folders. Now the kernels'
-folders go where every user can enter (dhlab.grading.isolation.kernels_parent), and when
-they cannot (here forced with DHLAB_GRADE_KERNELS_DIR), the self-check stops the grader with
-one message naming the user and the folder, and grades nothing.
+to kernel_info" — the kernels' users could not enter their own folders. Each kernel now has a
+private root that recreates the paths it needs, so such a folder grades; a kernel that still
+cannot work (here: a dhlab that fails to import in kernels) makes the self-check stop the grader
+with one message, and nothing is graded.
 """
 import csv
 import os
@@ -72,19 +72,44 @@ def test_a_private_tmpdir_no_longer_kills_every_kernel(package, tmp_open):
 
 
 @root_only
-def test_the_self_check_stops_the_grader_with_one_message_and_grades_nothing(package, tmp_open):
+def test_a_kernels_folder_others_cannot_enter_still_grades(package, tmp_open):
+    """The kernels' folders under a 0700 folder: each kernel's private root recreates the path it
+    needs, so the class is graded (before the private root, every kernel died at its start)."""
     blocked = tmp_open / "private"
     blocked.mkdir(mode=0o700)
     (blocked / "kernels").mkdir()
-    subs = _submissions(tmp_open / "subs", "valid_alternative", "mistake_part1")
+    subs = _submissions(tmp_open / "subs", "valid_alternative")
     out = tmp_open / "gradebook.csv"
     proc = _grader(["puma", str(subs), "-o", str(out), "-q"], package,
                    env={"DHLAB_GRADE_KERNELS_DIR": str(blocked / "kernels")})
     _, err = proc.communicate(timeout=600)
+    assert proc.returncode == 0, err[-2000:]
+    rows = list(csv.DictReader(open(out, encoding="utf-8-sig")))
+    assert [(r["submission"], r["score"]) for r in rows] == [("valid_alternative", "10")]
+
+
+@pytest.fixture
+def broken_package(tmp_open):
+    """dhlab whose import fails in a grading kernel (its environment names a submission's token),
+    while the grader itself imports it: an installation a kernel cannot use."""
+    from test_grading_runner import _package_copy
+    folder = _package_copy()
+    init = folder / "dhlab" / "__init__.py"
+    init.write_text("import os\nif os.environ.get('DHLAB_GRADE_TOKEN'):\n"
+                    "    raise ImportError('this dhlab is broken for kernels')\n" + init.read_text())
+    yield folder
+    shutil.rmtree(folder, ignore_errors=True)
+
+
+def test_the_self_check_stops_the_grader_with_one_message_and_grades_nothing(broken_package, tmp_open):
+    subs = _submissions(tmp_open / "subs", "valid_alternative", "mistake_part1")
+    out = tmp_open / "gradebook.csv"
+    proc = _grader(["puma", str(subs), "-o", str(out), "-q"], broken_package)
+    _, err = proc.communicate(timeout=600)
     assert proc.returncode == 5, err[-2000:]
     lines = [line for line in err.splitlines() if "self-check" in line]
     assert len(lines) == 1, err
-    assert "user dhlab-grade-" in lines[0] and f"cannot enter {blocked} (mode 0700, owner root)" in lines[0]
+    assert "user dhlab-grade-" in lines[0] and "this dhlab is broken for kernels" in lines[0]
     assert "What to do" in lines[0] and "grader error" not in err
     assert not out.exists()                                 # nothing graded, not even an empty gradebook
 

@@ -82,8 +82,8 @@ class SubmissionGroup:
         self.kind, self.dirs, self.memory_mb, self.max_pids = kind, dirs, memory_mb, max_pids
 
     def describe(self) -> str:
-        """E.g. 'cgroup v1: 2048 MB, 128 processes for the whole submission'."""
-        return f"cgroup {self.kind}: {self.memory_mb:.0f} MB, {self.max_pids} processes for the whole submission"
+        """E.g. 'cgroup v1: 2048 MB, 128 processes' (for the whole submission)."""
+        return f"cgroup {self.kind}: {self.memory_mb:.0f} MB, {self.max_pids} processes"
 
     def join(self, pid: int | None = None) -> None:
         """Move ``pid`` (default: this process) into every directory of the group."""

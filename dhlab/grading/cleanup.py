@@ -3,9 +3,10 @@
 A grader ended with ``SIGKILL`` (the machine's out-of-memory killer, ``kill -9``, a closed
 cloud shell) cannot tidy up: its private copies of the submissions
 (``dhlab-grade-copies-*``), its kernels' folders (``dhlab-grade-kernels-*``), its runners'
-folders (``dhlab-grade-run-*``, ``dhlab-runner-*``), the sandbox's temporary mount points
-(``dhlab-hold-*``), its runners and kernels still running from those folders and, as root,
-every process of its users ``dhlab-grade-K``.
+folders (``dhlab-grade-run-*``, ``dhlab-runner-*``), its runners and kernels still running from
+those folders and, as root, every process of its users ``dhlab-grade-K`` and the submissions'
+control groups (``dhlab-grade/sub-*``). (A kernel's private ``/tmp`` and ``/dev/shm`` vanish with
+it: nothing of them is left to clean.)
 ``--resume`` grades the missing rows again but leaves those; ``--clean`` removes them.
 
 It never touches a grader that is still running: every grader holds a shared lock on
@@ -127,6 +128,9 @@ def clean() -> tuple:
         finally:
             os.close(fd)
     ended = _end_kernels() if os.geteuid() == 0 and not busy else []
+    if os.geteuid() == 0 and not busy:            # the control groups of killed runners (dhlab.grading.cgroups)
+        from .cgroups import remove_leftovers
+        removed += [Path(folder) for folder in remove_leftovers()]
     return removed, busy, ended
 
 

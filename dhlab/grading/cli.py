@@ -11,10 +11,11 @@ Every ``*.ipynb`` under SUBMISSIONS_DIR (any depth, e.g. nbgrader's
 
 1. **Every submission is copied first**, without its outputs (:mod:`dhlab.grading.staging`),
    into a folder only the grader can enter; nothing runs before all are copied.
-2. **The grader checks itself** (:mod:`dhlab.grading.selfcheck`): one kernel is started exactly
-   as the submissions' will be and must import dhlab and answer; if it cannot, the grader
-   stops with one message (which user cannot enter which folder, what to do), exit code 5,
-   and grades nothing.
+2. **The grader checks itself** (:mod:`dhlab.grading.selfcheck`): the teacher's solution is
+   run exactly as the submissions' will be, under the same limits (``--memory-mb`` included),
+   and must earn full marks; if it cannot, the grader stops with one message (which user
+   cannot enter which folder, or which memory limit is too small and one that worked, what
+   to do), exit code 5, and grades nothing.
 3. Each copy is run by its own runner process (:mod:`dhlab.grading.runner`) in a fresh
    kernel with a time limit per cell (``--timeout``), a limit for the whole notebook, a
    memory limit and an output limit; ``-j N`` runs N at a time. As root, each kernel
@@ -28,13 +29,24 @@ Every ``*.ipynb`` under SUBMISSIONS_DIR (any depth, e.g. nbgrader's
 6. The gradebook CSV is rewritten atomically after every submission (submission,
    score, max_score, status, one column per part, seconds, feedback file, the file
    and its SHA-256), so a grader killed mid-batch keeps every finished row, and
-   ``--resume`` grades only what is missing (or changed). One feedback file per
-   submission goes to a folder beside it (``gradebook_feedback/``). Exit codes: 0 done,
-   2 usage, 3 stopped (dhlab changed), 4 cannot isolate, 5 the self-check failed.
+   ``--resume`` grades only what is missing (or changed), and every grader error again.
+   A plain re-run leaves the old gradebook as it is until its first new row. A row whose
+   file was removed since the last run is reported (and, with ``--resume``, kept, its status
+   starting "removed since the last run"). One feedback file per submission goes to a
+   folder beside it (``gradebook_feedback/``).
+7. **Ctrl-C** (:class:`_Interrupts`): the first starts no new submission and lets the running
+   ones finish; a second (or SIGTERM) stops them too, and their rows are not written.
+   Then the copies and kernels' folders are removed and the grader prints the command that
+   grades the rest (``… --resume``). Exit codes: 0 done, 2 usage, 3 stopped (dhlab changed),
+   4 cannot isolate, 5 the self-check failed, 130 interrupted.
 
 A submission that raises, hangs, floods its output, runs out of memory, is not a
 notebook, or tampers with dhlab gets the marks its real answers earn and a reason in
-``status``; it never stops the batch.
+``status``; it never stops the batch. A fault of the grader's is never a score: a kernel
+that ran out of the memory the teacher set before any answer was read, a copy removed
+before it ran, a cell of the assignment stopped (:func:`dhlab.grading.rows.grade_submission`)
+give a row with no score, "grader error: <cause and what to change>", graded again by
+``--resume``.
 
 **Personal variants** (notebooks released with ``dhlab-assign release``): with
 ``--secret-file`` each submission is graded against its student's own robot. While the
@@ -60,13 +72,17 @@ from __future__ import annotations
 import argparse
 import concurrent.futures
 import functools
+import os
+import shlex
+import signal
 import sys
+import tempfile
 import threading
 import time
 from pathlib import Path
 
 from .language import _
-from .launch import run_submission
+from .launch import Stopped, allow_runs, run_submission, stop_all
 from .progress import Progress, _summary
 from .rows import _error_row, grade_submission
 from .staging import find_submissions
@@ -79,7 +95,7 @@ ASSIGNMENTS = ("puma",)
 class _Batch:
     """The rows of one batch, the gradebook rewritten after each, and the package watch."""
 
-    def __init__(self, options, feedback_dir, rows, fingerprint_now):
+    def __init__(self, options, feedback_dir, rows, fingerprint_now, interrupts=None):
         self.options, self.feedback_dir = options, feedback_dir
         self.rows = {r["submission"]: r for r in rows}
         self.lock = threading.Lock()
@@ -89,6 +105,9 @@ class _Batch:
         self.stop = threading.Event()
         self.refusal = ""
         self.discarded = []
+        self.stopped = []                           # stopped by a second Ctrl-C: no row
+        self.interrupts = interrupts or _Interrupts()
+        self.written = False                        # the gradebook rewritten by this run yet
 
     def package_unchanged(self) -> bool:
         from .isolation import changed_files
@@ -126,25 +145,89 @@ class _Batch:
             self.rows[row["submission"]] = row
             self._write()
 
+    def cannot_write(self, submission: str, exc: OSError) -> None:
+        """The gradebook or a feedback file could not be written (a full disk, a folder removed): the
+        grader stops as when dhlab changed (exit code 3); the rows written so far stay."""
+        with self.lock:
+            self.discarded.append(submission)
+            if not self.stop.is_set():
+                self.stop.set()
+                self.refusal = _("cannot write {file} ({why}). Free some space or fix the folder, then run the "
+                                 "same command with --resume.").format(file=exc.filename or self.options.output,
+                                                                        why=exc.strerror or exc)
+
     def _write(self) -> None:
         from .gradebook import write_csv
         write_csv(self.options.output, self.rows.values(), self.options.columns)
+        self.written = True
+
+
+class _Interrupts:
+    """What Ctrl-C (SIGINT) does while the grader runs. The first: no new submission starts and the
+    running ones finish (before the batch: it stops at once); the second (or SIGTERM): the running
+    ones are stopped too (:func:`dhlab.grading.launch.stop_all`), and their rows are not written.
+    Either way the grader then removes its copies and kernels' folders, says how to resume, and
+    exits with 130. Before, one Ctrl-C graded to the end and a second turned correct notebooks
+    into zeros that ``--resume`` kept."""
+
+    SIGNALS = (signal.SIGINT, signal.SIGTERM)
+
+    def __init__(self):
+        self.count = 0
+        self.batch_running = False
+        self.previous = {}
+
+    def install(self) -> None:
+        """Handle the signals here, except one the grader was started ignoring (``nohup``, ``… &``)."""
+        if threading.current_thread() is threading.main_thread():     # (signals go to the main thread)
+            self.previous = {s: signal.signal(s, self.on_signal) for s in self.SIGNALS
+                             if signal.getsignal(s) != signal.SIG_IGN}
+
+    def uninstall(self) -> None:
+        for signum, handler in self.previous.items():
+            signal.signal(signum, handler if handler is not None else signal.SIG_DFL)
+        self.previous = {}
+
+    def on_signal(self, signum, frame) -> None:
+        self.count += 1
+        if self.count == 1 and signum == signal.SIGINT and self.batch_running:
+            self._say(_("Ctrl-C: no new submission starts; the running ones finish (Ctrl-C again to stop "
+                        "them now: they are then left for --resume)."))
+            return
+        stop_all()
+        self._say(_("Stopping: the running submissions are stopped; their rows are not written."))
+
+    @staticmethod
+    def _say(text: str) -> None:
+        """Write from a signal handler: os.write, since print may be in the middle of a line."""
+        try:
+            os.write(2, ("\n" + text + "\n").encode("utf-8", "replace"))
+        except OSError:
+            pass
 
 
 def _grade_one(batch, staged, iso, hide):
-    """One task of the pool: check the package, grade, check again, keep the row."""
-    if not batch.package_unchanged():
+    """One task of the pool: check the package, grade, check again, keep the row. After a Ctrl-C
+    it starts nothing; a submission stopped by a second one has no row (``--resume`` grades it)."""
+    if batch.interrupts.count or not batch.package_unchanged():
         return None
     started = time.monotonic()
     try:
         row = grade_submission(staged, batch.options, iso, hide)
+    except Stopped:
+        batch.stopped.append(staged.submission)
+        return None
     except Exception as exc:                      # never stop the batch
         row = _error_row(staged, exc)
     ended = time.monotonic()
     if not batch.package_unchanged():
         batch.discarded.append(staged.submission)
         return None
-    batch.add(row, started, ended)
+    try:
+        batch.add(row, started, ended)
+    except OSError as exc:                        # the disk, not the submission: stop, keep what is written
+        batch.cannot_write(row["submission"], exc)
+        return None
     return row
 
 
@@ -168,6 +251,16 @@ def grade(argv) -> int:
 
 
 def _grade(argv) -> int:
+    interrupts = _Interrupts()                    # Ctrl-C from now on: see _Interrupts
+    allow_runs()
+    interrupts.install()
+    try:
+        return _parse_and_grade(argv, interrupts)
+    finally:
+        interrupts.uninstall()
+
+
+def _parse_and_grade(argv, interrupts) -> int:
     parser = argparse.ArgumentParser(prog="dhlab-grade", description=__doc__.splitlines()[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("assignment", choices=ASSIGNMENTS, help=_("the assignment to grade (puma)"))
@@ -225,20 +318,46 @@ def _grade(argv) -> int:
         print(_("no notebooks (*.ipynb) found under {folder}").format(folder=folder), file=sys.stderr)
         return 2
     feedback_dir = options.feedback_dir or options.output.with_name(options.output.stem + "_feedback")
+    unwritable = _cannot_write(options.output)
+    if unwritable:
+        print(_("dhlab-grade: error: cannot write the gradebook {gradebook} ({why}): choose another -o").format(
+            gradebook=options.output, why=unwritable), file=sys.stderr)
+        return 2
+    return _run_batch(argv, options, folder, paths, feedback_dir, resolve, interrupts)
 
+
+def _cannot_write(output: Path) -> str:
+    """Why the gradebook cannot be written at ``output`` ('' when it can): found before anything
+    is graded, not after the first submission."""
+    if output.is_dir():
+        return _("it is a folder")
+    parent = output.parent if str(output.parent) else Path(".")
+    try:
+        parent.mkdir(parents=True, exist_ok=True)
+        with tempfile.TemporaryFile(dir=parent):
+            pass
+    except OSError as e:
+        return e.strerror or str(e)
+    return ""
+
+
+def _run_batch(argv, options, folder, paths, feedback_dir, resolve, interrupts) -> int:
+    """Stage, check the grader, grade every submission, and say what happened (exit code)."""
     from . import checks, grade_variants  # noqa: F401  (imported before any student code runs)
-    from .gradebook import assignment_cells, grade_again, read_csv
+    from .gradebook import assignment_cells, read_csv
     from .isolation import file_digests, setup
     from . import cleanup, selfcheck
     from .staging import stage_all
     held = cleanup.hold()                         # dhlab-grade --clean leaves this grader's folders alone  # noqa: F841
     checks.check_all(checks.Answers())            # build the reference before any student code runs
     assignment_cells()                            # and read the assignment's own cells
-
-    copies, staged = stage_all(folder, paths, resolve)   # every submission copied (and its variant checked)
-    for robot in {id(s.variant.robot): s.variant.robot for s in staged if s.variant and s.variant.variant}.values():
-        checks.check_all(checks.Answers(), ref=robot)   # each student's robot built before any code runs
+    copies, iso, batch = None, None, None
     try:
+        copies, staged = stage_all(folder, paths, resolve)   # every submission copied (and its variant checked)
+        for robot in {id(s.variant.robot): s.variant.robot for s in staged if s.variant and s.variant.variant}.values():
+            checks.check_all(checks.Answers(), ref=robot)   # each student's robot built before any code runs
+        if interrupts.count:
+            return _interrupted(argv, options, None, [], 0)
         try:
             iso = setup(options.jobs, options.isolation)
         except OSError as e:
@@ -247,43 +366,62 @@ def _grade(argv) -> int:
         if iso.why:
             print(f"Note: {iso.note()}", file=sys.stderr)
         try:
-            selfcheck.check(iso, options, [folder.resolve()])   # one kernel, as the submissions' will run
+            selfcheck.check(iso, options, [folder.resolve()])   # a correct notebook, as the submissions' will run
         except selfcheck.SelfCheckError as e:
+            if interrupts.count:
+                return _interrupted(argv, options, None, [], 0)
             print(f"dhlab-grade: {e}", file=sys.stderr)
             return 5
+        except Stopped:
+            return _interrupted(argv, options, None, [], 0)
+        if interrupts.count:
+            return _interrupted(argv, options, None, [], 0)
         feedback_dir.mkdir(parents=True, exist_ok=True)
-        old = read_csv(options.output, options.columns) if options.resume else []
-        current = {(s.submission, s.sha256) for s in staged}
-        keep = [r for r in old if (r["submission"], r["sha256"]) in current     # unchanged since graded,
-                and not grade_again(r)]                                          # and not a grader error
-        done = {(r["submission"], r["sha256"]) for r in keep}
-        todo = [s for s in staged if (s.submission, s.sha256) not in done]
-        batch = _Batch(options, feedback_dir, keep, file_digests)
-        batch._write()
-        hide = [folder.resolve()]
-        started = time.monotonic()
-        progress = Progress(len(todo), quiet=options.quiet)
-        graded = []
-        with concurrent.futures.ThreadPoolExecutor(max_workers=iso.jobs) as pool:
-            futures = [pool.submit(_grade_one, batch, s, iso, hide) for s in todo]
-            for future in concurrent.futures.as_completed(futures):
-                row = future.result()
-                if row is not None:
-                    graded.append(row)
-                    progress.step(row)
-        elapsed = time.monotonic() - started
+        old = read_csv(options.output, options.columns)
+        keep, removed, todo = _plan(old, staged, options.resume)
+        # the old gradebook stays as it is until the first new row (a re-run stopped early loses nothing)
+        batch = _Batch(options, feedback_dir, keep + (removed if options.resume else []), file_digests, interrupts)
+        graded, elapsed = _grade_all(batch, todo, iso, [folder.resolve()])
+        if not interrupts.count and not batch.written:
+            batch._write()                        # nothing new graded: the kept rows (and the removed ones)
     finally:
         import shutil
-        shutil.rmtree(copies, ignore_errors=True)
-        if "iso" in locals():
+        if copies is not None:
+            shutil.rmtree(copies, ignore_errors=True)
+        if iso is not None:
             iso.close()                           # our grading users, free for other graders again
             if iso.base is not None:
                 shutil.rmtree(iso.base, ignore_errors=True)
+    return _report(argv, options, feedback_dir, batch, todo, graded, elapsed, iso.jobs, keep, removed)
+
+
+def _grade_all(batch, todo, iso, hide) -> tuple:
+    """Grade ``todo``, ``iso.jobs`` at a time: (the rows graded, in the order they ended; seconds)."""
+    started = time.monotonic()
+    progress = Progress(len(todo), quiet=batch.options.quiet)
+    graded = []
+    batch.interrupts.batch_running = True
+    with concurrent.futures.ThreadPoolExecutor(max_workers=iso.jobs) as pool:
+        futures = [pool.submit(_grade_one, batch, s, iso, hide) for s in todo]
+        for future in concurrent.futures.as_completed(futures):
+            row = future.result()
+            if row is not None:
+                graded.append(row)
+                progress.step(row)
+    batch.interrupts.batch_running = False
+    progress.end()
+    return graded, time.monotonic() - started
+
+
+def _report(argv, options, feedback_dir, batch, todo, graded, elapsed, jobs, keep, removed) -> int:
+    """The summary at the end of a batch, and its exit code (0, 3 stopped, 130 interrupted)."""
     if graded:
-        print(_summary(graded, elapsed, iso.jobs), file=sys.stderr)
+        print(_summary(graded, elapsed, jobs), file=sys.stderr)
     if keep:
         print(_("Resumed: {count} rows kept from {gradebook}.").format(count=len(keep), gradebook=options.output),
               file=sys.stderr)
+    if removed:
+        print(_removed_text(removed, options.resume), file=sys.stderr)
     print(_("Gradebook: {gradebook}  Feedback: {folder}/").format(gradebook=options.output, folder=feedback_dir),
           file=sys.stderr)
     if batch.refusal:
@@ -291,7 +429,58 @@ def _grade(argv) -> int:
         print(_("STOPPED: {why}").format(why=batch.refusal), file=sys.stderr)
         print(_("Not graded ({count}): {names}").format(count=len(left), names=", ".join(left[:20])), file=sys.stderr)
         return 3
+    if batch.interrupts.count:
+        return _interrupted(argv, options, batch, todo, len(graded))
     return 0
+
+
+def _plan(old, staged, resume) -> tuple:
+    """(rows kept, rows of submissions removed since the last run, submissions to grade).
+
+    With ``--resume`` a row is kept when its file is unchanged and it is not a grader error; a row
+    whose file is gone from the folder is kept too, its status marked :data:`REMOVED` (its feedback
+    file is still there; dropping it silently lost a grade). Without ``--resume`` every submission is
+    graded again and the removed ones are only reported."""
+    from .gradebook import REMOVED, grade_again
+    present = {s.submission for s in staged}
+    removed = [r for r in old if r["submission"] not in present]
+    if not resume:
+        return [], removed, list(staged)
+    current = {(s.submission, s.sha256) for s in staged}
+    keep = [r for r in old if (r["submission"], r["sha256"]) in current     # unchanged since graded,
+            and not grade_again(r) and not r["status"].startswith(REMOVED)]  # and not a grader error
+    for row in removed:
+        if not row["status"].startswith(REMOVED):
+            row["status"] = f"{REMOVED}; {row['status']}"
+    done = {(r["submission"], r["sha256"]) for r in keep}
+    return keep, removed, [s for s in staged if (s.submission, s.sha256) not in done]
+
+
+def _removed_text(removed, resume) -> str:
+    """The summary's line on the submissions removed since the last run (none is dropped silently)."""
+    from .gradebook import REMOVED
+    names = ", ".join(r["submission"] for r in removed[:20]) + (", …" if len(removed) > 20 else "")
+    if resume:
+        return _("Removed since the last run ({count}): {names}. Their rows are kept, their status starting "
+                 "'{mark}'; delete those rows if they should go.").format(count=len(removed), names=names,
+                                                                          mark=REMOVED)
+    return _("Removed since the last run ({count}): {names}. They are not in the new gradebook (their "
+             "feedback files are still there).").format(count=len(removed), names=names)
+
+
+def _interrupted(argv, options, batch, todo, graded: int) -> int:
+    """After Ctrl-C: what was graded, and the exact command that grades the rest; exit code 130."""
+    again = list(argv) if "--resume" in argv or batch is None or not batch.written else [*argv, "--resume"]
+    command = "dhlab-grade " + shlex.join(again)
+    if batch is None or not batch.written:
+        print(_("Interrupted before any submission was graded: the gradebook {gradebook} is unchanged. "
+                "To grade: {command}").format(gradebook=options.output, command=command), file=sys.stderr)
+        return 130
+    missing = len([s for s in todo if s.submission not in batch.rows])
+    print(_("Interrupted: graded in this run {graded}, left {missing} ({stopped} stopped while running: their rows "
+            "are not written). The gradebook keeps every finished row. To grade the rest: {command}").format(
+        graded=graded, missing=missing, stopped=len(batch.stopped), command=command), file=sys.stderr)
+    return 130
 
 
 if __name__ == "__main__":

@@ -31,19 +31,21 @@ from pathlib import Path
 
 from .language import N_, _
 
-__all__ = ["COLUMNS", "VARIANT_COLUMNS", "PART_COLUMNS", "GRADE_AGAIN", "write_atomic", "write_csv", "read_csv",
+__all__ = ["COLUMNS", "VARIANT_COLUMNS", "PART_COLUMNS", "GRADE_AGAIN", "REMOVED", "write_atomic", "write_csv", "read_csv",
            "feedback_filename", "Cells", "error_text", "cell_error", "status_text", "feedback_text",
            "not_graded_feedback", "grade_again", "assignment_cells"]
 
 PART_COLUMNS = {"part1": "part1_sketch", "part2": "part2_links", "part3": "part3_transforms"}
 COLUMNS = ["submission", "score", "max_score", "status", *PART_COLUMNS.values(), "seconds", "feedback",
-           "file", "sha256"]
+           "file", "sha256", "isolation"]      # isolation: how the kernel was kept apart (runner.RunResult)
 # with personal variants (--secret-file) the gradebook has these too, at the end, so that a
 # reader of the first columns reads it as before (see dhlab.grading.grade_variants)
 VARIANT_COLUMNS = COLUMNS + ["variant_status", "variant_source", "variant_family", "variant_id", "signed_for"]
 # the end of the status of a row the grader must grade again (its own failure, or the machine's)
 GRADE_AGAIN = "grade again with --resume"      # (a key --resume finds: never translated)
 NOT_THE_STUDENTS = N_("not the student's fault: {again}")
+# the start of the status of a row kept by --resume although its file is no longer in the folder
+REMOVED = "removed since the last run"          # (a key --resume finds: never translated)
 
 
 def write_atomic(path, text: str) -> None:
@@ -64,25 +66,30 @@ def write_atomic(path, text: str) -> None:
 
 def write_csv(path, rows, columns=COLUMNS) -> None:
     """The gradebook: one row per submission (dicts with the keys of ``columns``:
-    :data:`COLUMNS`, or :data:`VARIANT_COLUMNS` when grading variants)."""
-    buffer = io.StringIO()
-    writer = csv.DictWriter(buffer, fieldnames=columns, extrasaction="ignore", restval="")
-    writer.writeheader()
-    for row in sorted(rows, key=lambda r: r["submission"]):
-        writer.writerow(row)
-    write_atomic(path, buffer.getvalue())
+    :data:`COLUMNS`, or :data:`VARIANT_COLUMNS` when grading variants). A teacher opens it in
+    a spreadsheet, so no cell runs as a formula (:mod:`dhlab.grading.csvsafe`): the numeric
+    columns — ``score``, ``max_score``, the three parts and ``seconds`` — keep their numbers;
+    every other cell is text, escaped when it starts like a formula (a file named
+    ``=1+2.ipynb`` is the row ``'=1+2``). UTF-8, with a BOM if :data:`~dhlab.grading.csvsafe.GRADEBOOK_BOM`."""
+    from .csvsafe import GRADEBOOK_BOM, csv_text
+    numeric = {"score", "max_score", *PART_COLUMNS.values(), "seconds"}
+    table = [list(columns)] + [[row.get(c, "") for c in columns]
+                               for row in sorted(rows, key=lambda r: r["submission"])]
+    write_atomic(path, csv_text(table, [k for k, c in enumerate(columns) if c in numeric], bom=GRADEBOOK_BOM))
 
 
 def read_csv(path, columns=COLUMNS) -> list:
     """The rows of an existing gradebook (for ``--resume``); [] when there is none or it
     is not a gradebook of these columns (one graded with variants is not resumed without
-    them, nor the other way round: every row is graded again)."""
+    them, nor the other way round: every row is graded again). With or without a BOM; each
+    cell as it was before :func:`write_csv` escaped it (the submission ``=1+2`` again)."""
+    from .csvsafe import restored
     try:
-        with open(path, newline="", encoding="utf-8") as f:
+        with open(path, newline="", encoding="utf-8-sig") as f:
             reader = csv.DictReader(f)
-            if reader.fieldnames != list(columns):
-                return []
-            return [dict(row) for row in reader]
+            if reader.fieldnames not in (list(columns), [c for c in columns if c != "isolation"]):
+                return []                         # (a gradebook from before the isolation column still resumes)
+            return [{k: restored(v) for k, v in row.items() if k is not None} for row in reader]
     except (OSError, csv.Error, UnicodeDecodeError):
         return []
 
@@ -252,10 +259,12 @@ def status_text(run: dict, report_answered: bool, answers_problem: str = "", cel
     if run.get("timeouts"):
         reasons.append(_("timeout: {cells} stopped at the time limit").format(cells=_cells(run["timeouts"], cells)))
     if run.get("output_capped"):
-        sizes = ", ".join(_("{size} MB in {cells}").format(size=f"{b / 1e6:.1f}", cells=_cells([c], cells))
-                          for c, b in run["output_capped"])
-        reasons.append(_("output limit: printed {sizes} (stopped, run again without it)").format(sizes=sizes))
-    if run.get("kernel_died"):
+        reasons.append(_("output limit: printed {sizes} (stopped, run again without it)").format(
+            sizes=_output_sizes(run, cells)))
+    if run.get("kernel_died") and run.get("limit") == "memory":    # the memory limit stopped the kernel
+        reasons.append(_stopped(N_("memory limit reached in {cells} (the kernel was stopped)"), run["kernel_died"],
+                                cells))
+    elif run.get("kernel_died"):
         reasons.append(_stopped(N_("kernel died in {cells}"), run["kernel_died"], cells))
     if run.get("stuck"):
         reasons.append(_stopped(N_("{cells} could not be interrupted"), run["stuck"], cells))
@@ -275,6 +284,20 @@ def status_text(run: dict, report_answered: bool, answers_problem: str = "", cel
     if run.get("isolation_note"):
         status += f" ({run['isolation_note']})"
     return status
+
+
+def _output_sizes(run: dict, cells=None) -> str:
+    """'more than 10 MB in cell 5': the limit the cell went over. Not the count the runner saw: the
+    kernel stops a flood itself, so the runner may have received only a little of an 11 MB print
+    (which read 'printed 0.0 MB'), and it counts characters, not bytes. ``run["output_mb"]``: the
+    limit (:func:`dhlab.grading.rows.grade_submission` puts it there); without it, the count."""
+    limit = run.get("output_mb")
+    if limit:
+        return ", ".join(_("more than {limit} MB in {cells}").format(limit=f"{float(limit):g}",
+                                                                      cells=_cells([c], cells))
+                         for c, _count in run["output_capped"])
+    return ", ".join(_("{size} MB in {cells}").format(size=f"{count / 1e6:.1f}", cells=_cells([c], cells))
+                     for c, count in run["output_capped"])
 
 
 def feedback_text(submission: str, run: dict, report, status: str, robot_lines=(), cells=None) -> str:

@@ -3,6 +3,11 @@
 The grader (:mod:`dhlab.grading.cli`) calls :func:`run_submission` for each staged copy;
 the runner (:mod:`dhlab.grading.runner`, started as a script) runs the notebook in its own
 kernel and writes a result file, which is all that comes back.
+
+Each runner is started in a session of its own, so a Ctrl-C in the teacher's terminal does not
+reach it: the grader decides. On a second Ctrl-C it calls :func:`stop_all`: no runner starts any
+more, every running one is killed with its kernel, and :func:`run_submission` raises
+:class:`Stopped` for them (their rows are not written, so ``--resume`` grades them).
 """
 from __future__ import annotations
 
@@ -13,9 +18,36 @@ import signal
 import subprocess
 import sys
 import tempfile
+import threading
 from pathlib import Path
 
-__all__ = ["run_submission"]
+__all__ = ["run_submission", "stop_all", "allow_runs", "Stopped"]
+
+_RUNNING = {}                        # pid -> the Popen of every runner running now
+_RUNNING_LOCK = threading.RLock()    # reentrant: stop_all runs in a signal handler, maybe inside it
+STOPPING = threading.Event()         # set by stop_all: no runner starts any more
+
+
+class Stopped(Exception):
+    """The grader was told to stop (a second Ctrl-C) while this submission ran: it has no result."""
+
+
+def stop_all() -> None:
+    """Kill every running runner's process group (its kernel goes with it: :func:`_run_once`
+    ends it afterwards) and start no other. Safe in a signal handler."""
+    STOPPING.set()
+    with _RUNNING_LOCK:
+        running = list(_RUNNING.values())
+    for proc in running:
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except (ProcessLookupError, PermissionError):
+            pass
+
+
+def allow_runs() -> None:
+    """Forget an earlier :func:`stop_all` (a new batch in the same process, e.g. in tests)."""
+    STOPPING.clear()
 
 
 def _kill_kernel(pid_file: Path) -> None:
@@ -41,6 +73,8 @@ def run_submission(staged, options, iso=None, hide=(), retries: int = 2) -> dict
     is ended and its folder removed.
     """
     from .isolation import setup
+    if STOPPING.is_set():
+        raise Stopped(staged.file)
     iso = iso or setup(1, "none")
     user = iso.acquire()
     token = secrets.token_hex(12)
@@ -50,6 +84,8 @@ def run_submission(staged, options, iso=None, hide=(), retries: int = 2) -> dict
         for attempt in range(retries + 1):
             run, cell = _run_once(staged.copy, options, skip=killed, user=user, workdir=workdir, token=token,
                                   hide=hide)
+            if STOPPING.is_set() and run.get("grader_error"):     # killed by stop_all, not by the notebook
+                raise Stopped(staged.file)
             if not run.get("grader_error") or cell is None or cell in killed or attempt == retries:
                 break
             killed.append(cell)
@@ -88,14 +124,20 @@ def _run_once(copy: Path, options, skip, user=None, workdir=None, token="", hide
         with open(log, "wb") as err:
             # TMPDIR: the runner's own files (connection file, kernel spec) land in this private
             # folder, which goes away even if the runner is killed
-            proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=err,
-                                    start_new_session=True, env=env)
+            with _RUNNING_LOCK:                   # stop_all sees every runner that starts
+                if STOPPING.is_set():
+                    return {"grader_error": "stopped before it started"}, None
+                proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=err,
+                                        start_new_session=True, env=env)
+                _RUNNING[proc.pid] = proc
             try:
                 proc.wait(timeout=hard_limit)
             except subprocess.TimeoutExpired:
                 os.killpg(proc.pid, signal.SIGKILL)
                 proc.wait()
             finally:
+                with _RUNNING_LOCK:
+                    _RUNNING.pop(proc.pid, None)
                 _kill_kernel(pid_file)
                 try:
                     os.killpg(proc.pid, signal.SIGKILL)          # whatever is left of the runner's session

@@ -38,6 +38,13 @@ class Progress:
             self.stream.write(line + "\n")
         self.stream.flush()
 
+    def end(self) -> None:
+        """End the bar's line when the batch stopped short of the total (Ctrl-C, a refusal), so that
+        what is printed next starts on a line of its own."""
+        if self.tty and not self.quiet and 0 < self.done < self.total:
+            self.stream.write("\n")
+            self.stream.flush()
+
 
 # (the start of a status, as dhlab.grading.gradebook writes it in the teacher's language; its label)
 STATUS_KINDS = [("ok", "ok"), (N_("not answered"), N_("not answered")), (N_("invalid notebook"), N_("invalid notebook")),

@@ -401,11 +401,11 @@ def _submission_group(user, token: str, memory_mb: float, result: RunResult):
     included: :mod:`dhlab.grading.cgroups`), or None where none can be made (then each process
     has its own limits, and ``result.isolation`` says so)."""
     if user is None:
-        result.isolation = "none: the kernel runs as the grader's own user, with per-process limits"
+        result.isolation = "none: the grader's own user, limits per process"
         return None
     group = cgroups.create(f"sub-{token}", memory_mb, MAX_PROCESSES)
     result.isolation = group.describe() if group else (
-        f"per-process limits only ({cgroups.last_refusal}): {memory_mb:.0f} MB of address space per process")
+        f"limits per process only ({cgroups.last_refusal}): {memory_mb:.0f} MB of address space each")
     return group
 
 
@@ -413,7 +413,7 @@ def _describe_isolation(result: RunResult, missing: list) -> None:
     """``result.isolation``: the user, the private root and network, the limits — and what did not hold."""
     held = ["own user"]
     if not any("private root" in m for m in missing):
-        held.append("private root (system, Python and dhlab read-only; own folder, /tmp, /dev/shm)")
+        held.append("private root")
     if not any("network" in m for m in missing):
         held.append("no network")
     result.isolation = "; ".join([", ".join(held), result.isolation] + [f"NOT: {m}" for m in missing])

@@ -2,10 +2,12 @@
 
 Before the first submission runs, :func:`check` starts **one kernel exactly as the submissions'
 will be started** — through the same runner, as the same unprivileged user, in the same mount
-namespace, with a working folder made the same way (hence the same ``TMPDIR``) — and asks it to
-import dhlab and answer one value. If it cannot, the grader stops with one message that says
-why (which user cannot enter which folder) and what to do, and grades nothing: a machine
-problem must not become 300 rows of "grader error".
+namespace, with a working folder made the same way (hence the same ``TMPDIR``) and the same
+limits (``--memory-mb`` included) — and grades the teacher's solution (:data:`SOLUTION`: what a
+correct submission does, from ``import dhlab`` to the last answer), which must earn full marks.
+If it cannot, the grader stops with one message that says why (which user cannot enter which
+folder; or the memory limit, and a limit that worked) and what to do, and grades nothing: a
+machine problem must not become 300 rows of "grader error", nor a limit 300 zeros.
 
 Why: run as root with ``TMPDIR`` pointing into a folder other users cannot enter (a ``0700``
 folder, as ``mktemp -d`` makes), every kernel died before it replied, and every submission
@@ -14,7 +16,6 @@ a teacher could act on.
 """
 from __future__ import annotations
 
-import json
 import os
 import shutil
 import sys
@@ -22,11 +23,11 @@ import tempfile
 from pathlib import Path
 from types import SimpleNamespace
 
-__all__ = ["SelfCheckError", "check", "PROBE_VALUE"]
+__all__ = ["SelfCheckError", "check", "SOLUTION"]
 
-PROBE_VALUE = 7                      # what the probe kernel must answer (as n_links)
-PROBE_CODE = ("import dhlab, dhlab.grading.answers  # the grader's self-check: dhlab must import\n"
-              f"n_links = {PROBE_VALUE}\n")
+# the teacher's solution: a correct submission, run exactly as every submission will be
+SOLUTION = Path(__file__).resolve().parent / "data" / "08_puma_assignment.ipynb"
+LARGER_MB = 2048                     # tried when the teacher's memory limit fails (unless theirs is larger)
 
 
 class SelfCheckError(Exception):
@@ -34,51 +35,82 @@ class SelfCheckError(Exception):
     what to do)."""
 
 
-def _probe_notebook(folder: Path) -> Path:
-    nb = {"nbformat": 4, "nbformat_minor": 5, "metadata": {},
-          "cells": [{"cell_type": "code", "metadata": {}, "source": PROBE_CODE, "outputs": [],
-                     "execution_count": None}]}
-    path = folder / "self-check.ipynb"
-    path.write_text(json.dumps(nb), encoding="utf-8")
-    return path
-
-
-def _answered(run: dict) -> bool:
-    try:
-        return json.loads(run.get("answers_json") or "{}").get("n_links") == PROBE_VALUE
-    except (ValueError, AttributeError):
-        return False
-
-
 def check(iso, options, hide=()) -> None:
-    """Run the probe kernel the way :func:`dhlab.grading.launch.run_submission` runs a submission
-    (``iso``: the batch's :class:`~dhlab.grading.isolation.Isolation`; ``options``: its limits);
-    raise :class:`SelfCheckError` when it does not import dhlab and answer."""
+    """Grade the teacher's solution the way :func:`dhlab.grading.launch.run_submission` runs a
+    submission (``iso``: the batch's :class:`~dhlab.grading.isolation.Isolation`; ``options``: its
+    limits, ``options.memory_mb`` included); raise :class:`SelfCheckError` unless it runs without an
+    error and earns full marks. Why a whole correct notebook and not a one-line probe: with
+    ``--memory-mb 1024`` a probe passed, then every correct notebook scored 0. When the limit is
+    the cause, the message names it and a limit that worked."""
+    run, ok = _grade_solution(iso, options, options.memory_mb, hide)
+    if ok:
+        return
+    larger = max(LARGER_MB, 2 * float(options.memory_mb))
+    if run.get("limit") == "memory" or float(options.memory_mb) < LARGER_MB:
+        retry, retry_ok = _grade_solution(iso, options, larger, hide)
+        if retry_ok:
+            raise SelfCheckError(memory_message(options.memory_mb, larger, run))
+        if run.get("limit") == "memory":
+            raise SelfCheckError(memory_message(options.memory_mb, None, run))
+    raise SelfCheckError(explain(iso, run))
+
+
+def _grade_solution(iso, options, memory_mb, hide) -> tuple:
+    """(the runner's result, whether it ran without an error and earns full marks) for the
+    solution notebook, copied as a submission is (:func:`dhlab.grading.staging.stage`)."""
     from .launch import run_submission
-    from .staging import Staged
+    from .staging import stage
     folder = Path(tempfile.mkdtemp(prefix="dhlab-grade-copies-"))     # where the real copies go
     os.chmod(folder, 0o700)
     try:
-        staged = Staged("(self-check)", "self-check.ipynb", "", _probe_notebook(folder))
+        staged = stage(SOLUTION, SOLUTION.parent, folder, 0)
+        if staged.copy is None:
+            return {"grader_error": f"{SOLUTION}: {staged.error}"}, False
         limits = SimpleNamespace(timeout=max(60.0, options.timeout), total_timeout=max(120.0, options.total_timeout),
-                                 memory_mb=options.memory_mb, output_mb=options.output_mb)
+                                 memory_mb=memory_mb, output_mb=options.output_mb)
         run = run_submission(staged, limits, iso, hide, retries=0)
     finally:
         shutil.rmtree(folder, ignore_errors=True)
-    if not run.get("grader_error") and not run.get("errors") and _answered(run):
-        return
-    raise SelfCheckError(explain(iso, run))
+    return run, not run.get("grader_error") and not run.get("errors") and _full_marks(run)
+
+
+def _full_marks(run: dict) -> bool:
+    """Whether the answers the kernel wrote earn full marks against the PUMA 560."""
+    from .answers import parse_json
+    from .checks import check_all
+    try:
+        report = check_all(parse_json(run.get("answers_json") or "{}"))
+    except (ValueError, AttributeError, TypeError):
+        return False
+    return report.score >= report.max_score
+
+
+def _what_failed(run: dict) -> str:
+    return (run.get("grader_error") or "; ".join(f"{e[1]}: {e[2]}" for e in run.get("errors", []))
+            or run.get("answers_error") or "it did not earn full marks")
+
+
+def memory_message(memory_mb, worked, run: dict) -> str:
+    """The self-check failed for the memory limit: name it, and the limit that worked (``worked``;
+    None when a larger one failed too)."""
+    head = (f"The grader's self-check failed, so nothing was graded: a correct notebook (the teacher's solution, "
+            f"run as every submission will be) did not run within the memory limit --memory-mb {float(memory_mb):g} "
+            f"({_what_failed(run)[:200]}).")
+    if worked is not None:
+        return (f"{head} With --memory-mb {worked:g} it earned full marks. What to do: grade with "
+                f"--memory-mb {worked:g} (or more).")
+    return (f"{head} What to do: grade with a larger --memory-mb; if that fails too, see the message of a run "
+            "with the default (2048).")
 
 
 def explain(iso, run: dict) -> str:
     """One message: what failed, why (which user cannot reach which path), and what to do."""
     from .isolation import blocked_on_the_way, package_dir
-    what = (run.get("grader_error") or "; ".join(f"{e[1]}: {e[2]}" for e in run.get("errors", []))
-            or run.get("answers_error") or "it did not answer")
+    what = _what_failed(run)
     user = iso.users[0] if iso.users else None
     who = f"user {user[0]} (uid {user[1]})" if user else f"the grader's own user (uid {os.geteuid()})"
     head = (f"The grader's self-check failed, so nothing was graded: a kernel started as every submission's "
-            f"will be ({who}) did not import dhlab and answer ({what[:200]}).")
+            f"will be ({who}) did not grade the teacher's solution ({what[:200]}).")
     if user is not None:
         gids = os.getgrouplist(user[0], user[2]) if hasattr(os, "getgrouplist") else [user[2]]
         kernels = iso.base if iso.base is not None else Path(tempfile.gettempdir())
