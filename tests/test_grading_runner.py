@@ -211,7 +211,7 @@ def test_the_old_gradebook_was_replaced_whole(batch):
     text = batch["csv"].read_text(encoding="utf-8")
     assert "an old gradebook" not in text
     assert text.splitlines()[0] == ("submission,score,max_score,status,part1_sketch,part2_links,part3_transforms,"
-                                    "seconds,feedback,file,sha256")
+                                    "seconds,feedback,file,sha256,isolation")
     assert not [p for p in batch["csv"].parent.iterdir() if p.name.endswith(".tmp")]
 
 
@@ -267,6 +267,13 @@ def test_no_folder_is_left_in_tmp(batch):
     """The sandbox's temporary mount points (as root: the Python under /root made reachable)
     are removed once the kernel's paths are mounted: a class of 30 leaves no 30 folders in /tmp."""
     assert batch["holds_left"] == set()
+
+
+@pytest.mark.skipif(not AS_ROOT, reason="the kernels run as their own users only when the grader is root")
+def test_every_row_says_how_its_kernel_was_isolated(batch):
+    ran = [row for row in batch["rows"].values() if row["seconds"] not in ("0", "0.0")]
+    assert ran and all("own user, private root" in row["isolation"] for row in ran), \
+        [(row["submission"], row["isolation"]) for row in ran if "private root" not in row["isolation"]]
 
 
 @pytest.mark.skipif(not AS_ROOT, reason="the kernels run as their own users only when the grader is root")

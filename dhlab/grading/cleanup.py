@@ -122,6 +122,9 @@ def clean() -> tuple:
         try:
             _end_processes(_leftovers(folder))
             for path in _leftovers(folder):
+                if os.geteuid() == 0:             # a kernel's folder is a tmpfs while it runs
+                    from .sandbox import unmount_below
+                    unmount_below(str(path))
                 shutil.rmtree(path, ignore_errors=True)
                 if not path.exists():
                     removed.append(path)

@@ -54,6 +54,7 @@ USER_PREFIX = "dhlab-grade-"
 MAX_USERS = 64                                  # dhlab-grade-1 … -64: room for many graders at once
 SANDBOX = Path(__file__).resolve().with_name("sandbox.py")
 KERNELS_DIR_ENV = "DHLAB_GRADE_KERNELS_DIR"     # where the kernels' own folders go (see kernels_parent)
+DISK_MB = 256                                   # a kernel's own folder (tmpfs, as root): see Isolation.workdir
 NOBODY_UID = 65534                              # root can become this uid even with no passwd entry for it
 
 
@@ -120,10 +121,18 @@ class Isolation:
         self._free.put(user)
 
     def workdir(self, user) -> Path:
-        """A fresh folder for one submission's kernel, owned by its user (mode 0700)."""
+        """A fresh folder for one submission's kernel, owned by its user (mode 0700). As root it is
+        a tmpfs of :data:`DISK_MB`: a submission cannot fill the machine's disk, and what it writes
+        counts as its memory (its control group's) and vanishes with it."""
         folder = Path(tempfile.mkdtemp(prefix="kernel-", dir=self.base))
         if user is not None:
             os.chown(folder, user[1], user[2])
+            if os.geteuid() == 0:
+                from .sandbox import mount_tmpfs
+                try:
+                    mount_tmpfs(str(folder), DISK_MB, user[1], user[2])
+                except OSError:
+                    pass                             # no tmpfs here: the folder stays on disk (runner says so)
         return folder
 
     def cleanup(self, user, workdir: Path, token: str) -> None:
@@ -134,6 +143,9 @@ class Isolation:
         if token and os.geteuid() == 0:           # the runner removes its group; a killed runner cannot
             from .cgroups import remove_leftovers
             remove_leftovers(f"sub-{token}")
+        if os.geteuid() == 0 and os.path.ismount(workdir):
+            from .sandbox import unmount
+            unmount(str(workdir))
         shutil.rmtree(workdir, ignore_errors=True)
         shutil.rmtree(f"{workdir}.root", ignore_errors=True)    # where its private root was mounted
 

@@ -53,12 +53,14 @@ try:
                                 read_code_cells, scan_for_tampering)
     from .sandbox import MAX_PROCESSES, OUTPUT_LIMIT_NOTE, apply_limits
     from . import cgroups
+    from .isolation import kill_user
 except ImportError:      # started as a script by the grader (see RUNNER below)
     from answers import ANSWER_NAMES, MAX_JSON_BYTES, encode_json, to_plain
     from notebook_code import (MAX_CODE_BYTES, MAX_NOTEBOOK_BYTES, NotebookError,  # noqa: F401 (API)
                                read_code_cells, scan_for_tampering)
     from sandbox import MAX_PROCESSES, OUTPUT_LIMIT_NOTE, apply_limits
     import cgroups
+    from isolation import kill_user
 
 __all__ = ["RunResult", "run_notebook", "read_code_cells", "scan_for_tampering", "main",
            "NotebookError", "MAX_NOTEBOOK_BYTES", "MAX_CODE_BYTES"]
@@ -156,7 +158,7 @@ class _Kernel:
         spec_dir.mkdir(parents=True, exist_ok=True)
         argv = [sys.executable, "-B", str(SANDBOX), "--memory-mb", str(memory_mb),
                 "--cpu-seconds", str(cpu_seconds), "--file-mb", str(file_mb), "--output-mb", str(output_mb)]
-        self.report = workdir / f".sandbox-{secrets.token_hex(4)}"
+        self.report = workdir / f".sandbox-{secrets.token_hex(8)}"
         if user is not None:
             argv += ["--uid", str(user[0]), "--gid", str(user[1]), "--workdir", str(workdir),
                      "--tmp-mb", str(TMP_MB), "--report", str(self.report)]
@@ -365,7 +367,7 @@ def run_notebook(path, timeout: float = 30, total_timeout: float = 120, memory_m
                              user=user, group_dirs=group.dirs if group else ())
             try:
                 if attempt == 0 and user is not None:
-                    _describe_isolation(result, kernel.sandbox_missing())
+                    _describe_isolation(result, kernel.sandbox_missing(), workdir)
                 broken = _run_cells(kernel, cells, skip, timeout, deadline, cap, result, attempt == 0, progress)
                 if broken is None:
                     _extract(kernel, workdir, result)
@@ -374,6 +376,9 @@ def run_notebook(path, timeout: float = 30, total_timeout: float = 120, memory_m
                 kernel.shutdown()
                 if group is not None and group.oom_kills():
                     result.limit = "memory"
+                # nothing of this attempt lives into the next one (a daemon that plants links in
+                # the kernel's folder for the next kernel's start, say)
+                _end_processes(group, user)
             skip.add(broken)
             result.skipped = sorted(skip)
             if time.monotonic() > deadline - 2 or attempt == MAX_ATTEMPTS - 1:
@@ -409,11 +414,23 @@ def _submission_group(user, token: str, memory_mb: float, result: RunResult):
     return group
 
 
-def _describe_isolation(result: RunResult, missing: list) -> None:
+def _end_processes(group, user) -> None:
+    """End every process the submission started: its control group's, else its user's."""
+    if group is not None:
+        group.kill_all()
+    if user is not None and user[0] != 0:
+        kill_user(user[0])
+
+
+def _describe_isolation(result: RunResult, missing: list, kernel_folder=None) -> None:
     """``result.isolation``: the user, the private root and network, the limits — and what did not hold."""
     held = ["own user"]
     if not any("private root" in m for m in missing):
         held.append("private root")
+    if kernel_folder is not None and os.path.ismount(kernel_folder):
+        held.append("own folder a tmpfs")
+    else:
+        missing = [*missing, "its own folder is on the disk, with no size limit but 64 MB per file"]
     if not any("network" in m for m in missing):
         held.append("no network")
     result.isolation = "; ".join([", ".join(held), result.isolation] + [f"NOT: {m}" for m in missing])

@@ -24,7 +24,7 @@ again.
 starts, this process joins the submission's control group (``--group``, made by the runner:
 :mod:`dhlab.grading.cgroups`: memory and processes limited for the whole submission, children
 included), enters private mount, IPC and network namespaces and **a root of its own**
-(:func:`enter_sandbox`): a new tmpfs holding only the system's programs and libraries, ``/etc``,
+(:func:`enter_sandbox`): a new tmpfs holding only the system's programs and libraries, a few files of ``/etc``,
 the Python installation and dhlab's own folder — all read-only — the kernel's own folder
 (writable), a private ``/tmp`` and ``/dev/shm`` of ``--tmp-mb`` each (they vanish with the
 kernel), a few devices and a ``/proc`` that shows only the kernel user's processes. Then it
@@ -45,9 +45,10 @@ from __future__ import annotations
 import argparse
 import ctypes
 import ctypes.util
+import glob
 import os
 import resource
-import shutil
+import secrets
 import signal
 import sys
 import tempfile
@@ -66,7 +67,12 @@ MS_REMOUNT, MS_BIND, MS_REC, MS_PRIVATE = 32, 4096, 16384, 1 << 18
 MNT_DETACH = 2
 PIVOT_ROOT = {"x86_64": 155, "aarch64": 41, "riscv64": 41, "ppc64le": 203, "s390x": 217, "i686": 217}  # syscall numbers
 # what every kernel reads, bound read-only into its private root (links such as /bin -> usr/bin copied)
-SYSTEM_PATHS = ("/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32", "/etc")
+SYSTEM_PATHS = ("/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32")
+# of /etc only what programs, the dynamic linker, Python and matplotlib read: not the whole of it
+# (a token in /etc/environment, a password in a service's configuration stays out of sight)
+ETC_NAMES = ("passwd", "group", "nsswitch.conf", "ld.so.cache", "ld.so.conf", "ld.so.conf.d", "localtime",
+             "timezone", "alternatives", "fonts", "mime.types", "hosts", "host.conf", "os-release",
+             "matplotlibrc", "locale.alias", "locale.conf", "default/locale", "python3*", "ipython", "jupyter")
 DEVICES = ("/dev/null", "/dev/zero", "/dev/full", "/dev/random", "/dev/urandom")
 
 
@@ -148,6 +154,31 @@ def _mount(libc, source, target, fstype, flags, data=None):
         raise OSError(err, f"mount {fstype or 'bind'} on {target}: {os.strerror(err)}")
 
 
+def mount_tmpfs(target: str, size_mb: float, uid: int, gid: int) -> None:
+    """Mount a tmpfs of ``size_mb`` on ``target``, owned by ``uid``/``gid`` (mode 0700): a kernel's
+    own folder with a size (what it writes is memory of its control group, and goes with it)."""
+    _mount(_libc(), "tmpfs", target, "tmpfs", MS_NOSUID | MS_NODEV,
+           f"size={max(1, int(size_mb))}m,mode=0700,uid={int(uid)},gid={int(gid)}")
+
+
+def unmount(target: str) -> bool:
+    """Detach whatever is mounted on ``target`` (lazily: busy files go when closed); False if nothing was."""
+    return _libc().umount2(os.fsencode(target), MNT_DETACH) == 0
+
+
+def unmount_below(folder: str) -> int:
+    """Detach every mount at or below ``folder`` (the kernels' folders a killed grader left mounted);
+    how many were."""
+    folder = os.path.realpath(folder).rstrip("/")
+    try:
+        with open("/proc/self/mounts", encoding="utf-8", errors="replace") as f:
+            points = [line.split()[1].replace("\\040", " ") for line in f if len(line.split()) > 1]
+    except OSError:
+        return 0
+    below = [p for p in points if p == folder or p.startswith(folder + "/")]
+    return sum(unmount(p) for p in sorted(below, key=len, reverse=True))
+
+
 def _covered(path: str, by) -> bool:
     return any(path == q or path.startswith(q.rstrip("/") + "/") for q in by)
 
@@ -157,7 +188,12 @@ def _needed_paths() -> list:
     (a virtual environment's folder) and dhlab's own folder — never the folder around it (an
     editable install's checkout holds the notebooks and tests, a teacher's may hold more)."""
     import importlib.util
-    paths = {sys.base_prefix, sys.prefix, sys.exec_prefix, os.path.dirname(os.path.realpath(sys.executable))}
+    # a base installation's programs and libraries, not its whole folder (a conda base holds every
+    # environment, its package cache and .condarc); a virtual environment is the course's own: whole
+    paths = {os.path.join(prefix, sub) for prefix in {sys.base_prefix, sys.base_exec_prefix}
+             for sub in ("bin", "lib", "lib64", "share")}
+    paths |= {sys.prefix, sys.exec_prefix} - {sys.base_prefix, sys.base_exec_prefix}
+    paths.add(os.path.dirname(os.path.realpath(sys.executable)))
     # the packages' folders on the path, also those a .pth file reaches (a virtual environment
     # built on another one's packages) — never a plain folder on the path (the current folder)
     paths |= {p for p in sys.path if os.path.basename(p.rstrip("/")) in ("site-packages", "dist-packages")}
@@ -199,10 +235,11 @@ def _place(root: str, path: str, like: str) -> str:
 
 def _bind(libc, root: str, path: str, writable: bool = False) -> None:
     """Bind ``path`` at the same place inside ``root``; read-only unless ``writable``. A symbolic
-    link (``/bin`` -> ``usr/bin`` on merged-/usr systems) is copied as a link."""
-    if os.path.islink(path) and os.path.dirname(path) == "/":
+    link (``/bin`` -> ``usr/bin`` on merged-/usr systems, ``/etc/os-release``) is copied as a link."""
+    if os.path.islink(path):
         link = os.path.join(root, path.lstrip("/"))
         if not os.path.lexists(link):
+            os.makedirs(os.path.dirname(link), mode=0o755, exist_ok=True)
             os.symlink(os.readlink(path), link)
         return
     target = _place(root, path, path)
@@ -219,7 +256,7 @@ def root_folder(workdir: str | None) -> str:
 
 def _private_root(libc, workdir: str, tmp_mb: float) -> str:
     """Build the kernel's whole file system in a new tmpfs and return its folder: the system's
-    programs and libraries, /etc, Python and dhlab read-only; the kernel's own folder
+    programs and libraries, a few files of /etc, Python and dhlab read-only; the kernel's own folder
     writable; a private /tmp and /dev/shm of ``tmp_mb`` MB each; a few devices; a /proc that
     shows only the kernel user's processes. Nothing else exists in it: not the submissions,
     the release, the secret, the gradebook, the teacher's home, nor sockets at file paths."""
@@ -231,8 +268,9 @@ def _private_root(libc, workdir: str, tmp_mb: float) -> str:
         _mount(libc, "tmpfs", folder, "tmpfs", MS_NOSUID | MS_NODEV,
                f"mode=1777,size={max(1, int(tmp_mb))}m")
     bound = []
-    for path in [*SYSTEM_PATHS, *_needed_paths()]:
-        if os.path.islink(path) and os.path.dirname(path) == "/":
+    etc = sorted({p for name in ETC_NAMES for p in glob.glob(os.path.join("/etc", name))})
+    for path in [*SYSTEM_PATHS, *etc, *_needed_paths()]:
+        if os.path.islink(path):
             _bind(libc, root, path)                      # /bin -> usr/bin: the link itself
         elif os.path.exists(path) and not _covered(os.path.realpath(path), bound):
             _bind(libc, root, os.path.realpath(path))
@@ -295,8 +333,10 @@ def enter_sandbox(uid: int, gid: int, workdir: str | None = None, tmp_mb: float 
         missing.append(f"the kernels have network access (no network namespace: "
                        f"{os.strerror(ctypes.get_errno())})")
     if report:                                    # for the runner: what held (written as root, before any student code)
-        with open(report, "w", encoding="utf-8") as f:
-            f.write("\n".join(missing))
+        try:
+            write_new(report, "\n".join(missing).encode("utf-8"))
+        except OSError:
+            pass                                  # something is in its place: the runner reads nothing
     resource.setrlimit(resource.RLIMIT_NPROC, (MAX_PROCESSES, MAX_PROCESSES))
     os.setgroups([])
     os.setgid(gid)
@@ -306,15 +346,29 @@ def enter_sandbox(uid: int, gid: int, workdir: str | None = None, tmp_mb: float 
     return missing
 
 
+def write_new(path: str, data: bytes, uid: int | None = None, gid: int | None = None) -> None:
+    """Create ``path`` and write ``data``, never through a link or over a file that is already
+    there. Root writes into folders a student's process owns (the kernel's own folder): a link
+    planted there by a process of an earlier kernel must not make root write or chown another file."""
+    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW | os.O_CLOEXEC, 0o600)
+    try:
+        if uid is not None:
+            os.fchown(fd, uid, gid)
+        os.write(fd, data)
+    finally:
+        os.close(fd)
+
+
 def _private_connection_file(rest, workdir, uid, gid) -> list:
-    """Copy the kernel's connection file (in the runner's private folder) to the kernel's own."""
+    """Copy the kernel's connection file (in the runner's private folder) to the kernel's own,
+    under a new name each time (see :func:`write_new`)."""
     rest = list(rest)
     if "-f" in rest and workdir:
         i = rest.index("-f") + 1
-        target = os.path.join(workdir, "kernel-connection.json")
-        shutil.copyfile(rest[i], target)
-        os.chmod(target, 0o600)
-        os.chown(target, uid, gid)
+        with open(rest[i], "rb") as f:
+            data = f.read()
+        target = os.path.join(workdir, f"kernel-connection-{secrets.token_hex(8)}.json")
+        write_new(target, data, uid, gid)
         rest[i] = target
     return rest
 
