@@ -5,6 +5,7 @@ Why the sockets: see tests/kernelsockets.py (the flaky "Kernel didn't respond in
 """
 import fcntl
 import os
+import shutil
 import tempfile
 
 import pytest
@@ -47,3 +48,14 @@ def one_batch_at_a_time():
     with open(os.path.join(tempfile.gettempdir(), "dhlab-tests-one-batch.lock"), "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         yield
+
+
+@pytest.fixture(scope="module")
+def package(one_batch_at_a_time):
+    """dhlab copied into a folder every user can read, for a module's grader runs (PYTHONPATH):
+    a submission that tampers with "the installed dhlab" touches only the copy, and no one editing
+    this working tree disturbs the grader's check that its package is unchanged."""
+    from test_grading_runner import _package_copy
+    folder = _package_copy()
+    yield folder
+    shutil.rmtree(folder, ignore_errors=True)

@@ -15,7 +15,6 @@ import copy
 import csv
 import json
 import math
-import shutil
 import sys
 from pathlib import Path
 
@@ -126,14 +125,6 @@ def _rows(path) -> dict:
     with open(path, newline="", encoding="utf-8") as f:
         reader = csv.DictReader(f)
         return reader.fieldnames, {row["submission"]: row for row in reader}
-
-
-@pytest.fixture(scope="module")
-def package(one_batch_at_a_time):
-    from test_grading_runner import _package_copy
-    folder = _package_copy()
-    yield folder
-    shutil.rmtree(folder, ignore_errors=True)
 
 
 def test_the_class_is_graded_against_each_students_robot(released, handed_in, package):

@@ -251,14 +251,6 @@ def test_a_gradebook_that_cannot_be_written_stops_the_batch_with_a_message(tmp_p
 AS_ROOT = os.geteuid() == 0
 
 
-@pytest.fixture(scope="module")
-def package(one_batch_at_a_time):
-    from test_grading_runner import _package_copy
-    folder = _package_copy()
-    yield folder
-    shutil.rmtree(folder, ignore_errors=True)
-
-
 @pytest.fixture
 def place():
     """A folder every user may pass through, with a TMPDIR of its own (for the leftovers' check)."""

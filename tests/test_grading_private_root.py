@@ -9,7 +9,6 @@ grader's own user, and the gradebook says so).
 """
 import json
 import os
-import pwd
 import shutil
 import socket
 import stat
@@ -22,18 +21,11 @@ from pathlib import Path
 import pytest
 
 from dhlab.grading import cgroups, gradescope, isolation, runner, sandbox
+from test_grading_runner import _notebook
 
 ROOT = Path(__file__).resolve().parents[1]
 AS_ROOT = os.geteuid() == 0
 needs_root = pytest.mark.skipif(not AS_ROOT, reason="a private root and a grading user need root")
-
-
-def _notebook(path, *cells):
-    nb = {"nbformat": 4, "nbformat_minor": 5, "metadata": {},
-          "cells": [{"cell_type": "code", "metadata": {}, "source": c, "outputs": [], "execution_count": None}
-                    for c in cells]}
-    path.write_text(json.dumps(nb), encoding="utf-8")
-    return path
 
 
 @pytest.fixture()

@@ -27,14 +27,6 @@ AS_ROOT = os.geteuid() == 0
 root_only = pytest.mark.skipif(not AS_ROOT, reason="kernels run as other users only when the grader is root")
 
 
-@pytest.fixture(scope="module")
-def package(one_batch_at_a_time):
-    from test_grading_runner import _package_copy
-    folder = _package_copy()
-    yield folder
-    shutil.rmtree(folder, ignore_errors=True)
-
-
 @pytest.fixture
 def tmp_open():
     """A folder every user may pass through (0711), for this test's TMPDIR and its private folders."""

@@ -228,15 +228,6 @@ def test_gradescope_results_in_the_students_language():
 
 # --- one class, both languages, one run ---------------------------------------------------------------------
 
-@pytest.fixture(scope="module")
-def package(one_batch_at_a_time):
-    import shutil
-    from test_grading_runner import _package_copy
-    folder = _package_copy()
-    yield folder
-    shutil.rmtree(folder, ignore_errors=True)
-
-
 def _wrong(nb):
     """One slip: one link too few (part 1), the rest right."""
     nb = copy.deepcopy(nb)
