@@ -53,14 +53,12 @@ try:
                                 read_code_cells, scan_for_tampering)
     from .sandbox import MAX_PROCESSES, OUTPUT_LIMIT_NOTE, apply_limits
     from . import cgroups
-    from .isolation import kill_user
 except ImportError:      # started as a script by the grader (see RUNNER below)
     from answers import ANSWER_NAMES, MAX_JSON_BYTES, encode_json, to_plain
     from notebook_code import (MAX_CODE_BYTES, MAX_NOTEBOOK_BYTES, NotebookError,  # noqa: F401 (API)
                                read_code_cells, scan_for_tampering)
     from sandbox import MAX_PROCESSES, OUTPUT_LIMIT_NOTE, apply_limits
     import cgroups
-    from isolation import kill_user
 
 __all__ = ["RunResult", "run_notebook", "read_code_cells", "scan_for_tampering", "main",
            "NotebookError", "MAX_NOTEBOOK_BYTES", "MAX_CODE_BYTES"]
@@ -415,11 +413,11 @@ def _submission_group(user, token: str, memory_mb: float, result: RunResult):
 
 
 def _end_processes(group, user) -> None:
-    """End every process the submission started: its control group's, else its user's."""
+    """End every process of this submission's control group (none: the grader ends the user's
+    processes after the submission, :meth:`dhlab.grading.isolation.Isolation.cleanup`). Never all
+    of the user's here: a runner does not own its user, its grader does (see :func:`main`)."""
     if group is not None:
         group.kill_all()
-    if user is not None and user[0] != 0:
-        kill_user(user[0])
 
 
 def _describe_isolation(result: RunResult, missing: list, kernel_folder=None) -> None:
@@ -499,6 +497,23 @@ def _extract(kernel, workdir: Path, result: RunResult) -> None:
     result.answers_json = data.decode("utf-8", errors="replace")
 
 
+def _die_with_the_grader() -> None:
+    """End this runner when the grader that started it ends (``prctl(PR_SET_PDEATHSIG)``). A runner
+    outliving a grader killed with ``kill -9`` would go on starting kernels as a user that the next
+    grader may already have claimed, and end them in the middle of that grader's work."""
+    import ctypes
+    import ctypes.util
+    import signal
+    parent = os.getppid()
+    try:
+        libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6", use_errno=True)
+        libc.prctl(1, signal.SIGKILL, 0, 0, 0)        # PR_SET_PDEATHSIG
+    except (OSError, AttributeError):
+        return
+    if os.getppid() != parent:                        # the grader ended before the call: so do we
+        os._exit(1)
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("notebook")
@@ -516,6 +531,7 @@ def main(argv=None) -> int:
     parser.add_argument("--hide", action="append", default=[], help="a folder the kernel must not see")
     parser.add_argument("--token", default="", help="an opaque mark put in the kernel's environment")
     args = parser.parse_args(argv)
+    _die_with_the_grader()
     apply_limits(memory_mb=max(4096, 2 * args.memory_mb), cpu_seconds=None, file_mb=None)
     user = (args.uid, args.gid) if args.uid is not None else None
     result = run_notebook(args.notebook, args.timeout, args.total_timeout, args.memory_mb, args.output_mb,
