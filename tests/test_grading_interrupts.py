@@ -172,7 +172,7 @@ def _fake_runs(monkeypatch, enough_mb):
     """The runner, faked: a correct notebook runs out of memory below ``enough_mb``."""
     seen = []
 
-    def run(staged, limits, iso, hide, retries=2):
+    def run(staged, limits, iso, retries=2):
         seen.append((json.loads(Path(staged.copy).read_text()), limits.memory_mb))
         if limits.memory_mb < enough_mb:
             return {"limit": "memory", "errors": [], "answers_error": "the kernel did not write the answers"}
@@ -240,7 +240,7 @@ def test_a_gradebook_that_cannot_be_written_stops_the_batch_with_a_message(tmp_p
                        [], lambda: "unchanged")
     row = {"submission": "ana", "feedback": "ana.txt", "_feedback_text": "…", "score": "10", "status": "ok"}
     monkeypatch.setattr(cli, "grade_submission", lambda *a, **k: dict(row))
-    assert cli._grade_one(batch, SimpleNamespace(submission="ana"), None, ()) is None
+    assert cli._grade_one(batch, SimpleNamespace(submission="ana"), None) is None
     assert batch.refusal.startswith("cannot write ") and "--resume" in batch.refusal
     assert batch.discarded == ["ana"] and not batch.package_unchanged()        # nothing else starts
     assert cli._cannot_write(tmp_path) == "it is a folder" and cli._cannot_write(tmp_path / "new" / "gb.csv") == ""

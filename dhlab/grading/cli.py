@@ -206,14 +206,14 @@ class _Interrupts:
             pass
 
 
-def _grade_one(batch, staged, iso, hide):
+def _grade_one(batch, staged, iso):
     """One task of the pool: check the package, grade, check again, keep the row. After a Ctrl-C
     it starts nothing; a submission stopped by a second one has no row (``--resume`` grades it)."""
     if batch.interrupts.count or not batch.package_unchanged():
         return None
     started = time.monotonic()
     try:
-        row = grade_submission(staged, batch.options, iso, hide)
+        row = grade_submission(staged, batch.options, iso)
     except Stopped:
         batch.stopped.append(staged.submission)
         return None
@@ -366,7 +366,7 @@ def _run_batch(argv, options, folder, paths, feedback_dir, resolve, interrupts) 
         if iso.why:
             print(f"Note: {iso.note()}", file=sys.stderr)
         try:
-            selfcheck.check(iso, options, [folder.resolve()])   # a correct notebook, as the submissions' will run
+            selfcheck.check(iso, options)   # a correct notebook, as the submissions' will run
         except selfcheck.SelfCheckError as e:
             if interrupts.count:
                 return _interrupted(argv, options, None, [], 0)
@@ -381,7 +381,7 @@ def _run_batch(argv, options, folder, paths, feedback_dir, resolve, interrupts) 
         keep, removed, todo = _plan(old, staged, options.resume)
         # the old gradebook stays as it is until the first new row (a re-run stopped early loses nothing)
         batch = _Batch(options, feedback_dir, keep + (removed if options.resume else []), file_digests, interrupts)
-        graded, elapsed = _grade_all(batch, todo, iso, [folder.resolve()])
+        graded, elapsed = _grade_all(batch, todo, iso)
         if not interrupts.count and not batch.written:
             batch._write()                        # nothing new graded: the kept rows (and the removed ones)
     finally:
@@ -395,14 +395,14 @@ def _run_batch(argv, options, folder, paths, feedback_dir, resolve, interrupts) 
     return _report(argv, options, feedback_dir, batch, todo, graded, elapsed, iso.jobs, keep, removed)
 
 
-def _grade_all(batch, todo, iso, hide) -> tuple:
+def _grade_all(batch, todo, iso) -> tuple:
     """Grade ``todo``, ``iso.jobs`` at a time: (the rows graded, in the order they ended; seconds)."""
     started = time.monotonic()
     progress = Progress(len(todo), quiet=batch.options.quiet)
     graded = []
     batch.interrupts.batch_running = True
     with concurrent.futures.ThreadPoolExecutor(max_workers=iso.jobs) as pool:
-        futures = [pool.submit(_grade_one, batch, s, iso, hide) for s in todo]
+        futures = [pool.submit(_grade_one, batch, s, iso) for s in todo]
         for future in concurrent.futures.as_completed(futures):
             row = future.result()
             if row is not None:

@@ -221,12 +221,11 @@ def _grade(root: Path, config: dict) -> dict:
         print(f"dhlab autograder: {iso.note() or 'the kernel runs as ' + iso.users[0][0]}", flush=True)
         if os.geteuid() == 0 and iso.mode != "user":
             raise AutograderError(ROOT_KERNEL.format(why=iso.why))
-        hide = [p.resolve() for p in (source, submission) if p.is_dir()]
         try:
-            selfcheck.check(iso, options, hide)
+            selfcheck.check(iso, options)
         except selfcheck.SelfCheckError as e:
             raise AutograderError(str(e)) from None
-        row = grade_submission(staged, options, iso, hide)
+        row = grade_submission(staged, options, iso)
     finally:
         shutil.rmtree(into, ignore_errors=True)
         if iso is not None:

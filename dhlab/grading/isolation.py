@@ -143,7 +143,7 @@ class Isolation:
         if token and os.geteuid() == 0:           # the runner removes its group; a killed runner cannot
             from .cgroups import remove_leftovers
             remove_leftovers(f"sub-{token}")
-        if os.geteuid() == 0 and os.path.ismount(workdir):
+        if os.geteuid() == 0:                     # its tmpfs (Isolation.workdir), if it has one
             from .sandbox import unmount
             unmount(str(workdir))
         shutil.rmtree(workdir, ignore_errors=True)

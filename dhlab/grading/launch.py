@@ -64,7 +64,7 @@ def _kill_kernel(pid_file: Path) -> None:
             pass
 
 
-def run_submission(staged, options, iso=None, hide=(), retries: int = 2) -> dict:
+def run_submission(staged, options, iso=None, retries: int = 2) -> dict:
     """Run one staged notebook in a runner process; the runner's result (a dict).
 
     If the runner process itself dies (a notebook can kill its kernel's parent when it
@@ -82,8 +82,7 @@ def run_submission(staged, options, iso=None, hide=(), retries: int = 2) -> dict
     try:
         killed = []
         for attempt in range(retries + 1):
-            run, cell = _run_once(staged.copy, options, skip=killed, user=user, workdir=workdir, token=token,
-                                  hide=hide)
+            run, cell = _run_once(staged.copy, options, skip=killed, user=user, workdir=workdir, token=token)
             if STOPPING.is_set() and run.get("grader_error"):     # killed by stop_all, not by the notebook
                 raise Stopped(staged.file)
             if not run.get("grader_error") or cell is None or cell in killed or attempt == retries:
@@ -100,7 +99,7 @@ def run_submission(staged, options, iso=None, hide=(), retries: int = 2) -> dict
         iso.release(user)
 
 
-def _run_once(copy: Path, options, skip, user=None, workdir=None, token="", hide=()) -> tuple:
+def _run_once(copy: Path, options, skip, user=None, workdir=None, token="") -> tuple:
     """(result dict, the cell that was running when the runner stopped or None)."""
     from .runner import RUNNER
     with tempfile.TemporaryDirectory(prefix="dhlab-grade-run-") as tmp:
@@ -115,7 +114,6 @@ def _run_once(copy: Path, options, skip, user=None, workdir=None, token="", hide
             cmd += ["--workdir", str(workdir)]
         if user is not None:
             cmd += ["--uid", str(user[1]), "--gid", str(user[2])]
-            cmd += [a for folder in hide for a in ("--hide", str(folder))]
         for cell in skip:
             cmd += ["--skip", str(cell)]
         hard_limit = options.total_timeout + 150          # kernel starts and the answers' read

@@ -21,7 +21,7 @@ from .launch import run_submission
 __all__ = ["grade_submission"]
 
 
-def grade_submission(staged, options, iso=None, hide=()) -> dict:
+def grade_submission(staged, options, iso=None) -> dict:
     """Run, read the answers, score in this process: one gradebook row (+ feedback text).
     With variants (``staged.variant``), against that student's robot."""
     from . import checks
@@ -40,7 +40,7 @@ def grade_submission(staged, options, iso=None, hide=()) -> dict:
     elif staged.copy is None:                     # the grader ran out of memory or disk on it: its fault
         run = {"grader_error": staged.error} if getattr(staged, "grader_fault", False) else {"notebook_error": staged.error}
     else:
-        run = run_submission(staged, options, iso, hide)
+        run = run_submission(staged, options, iso)
     run["file"] = staged.file
     run["output_mb"] = getattr(options, "output_mb", None)
     if iso is not None and iso.note():

@@ -4,7 +4,7 @@ The grader starts one runner process per submission::
 
     python dhlab/grading/runner.py NOTEBOOK RESULT.json [--timeout 30] [--total-timeout 120]
                                    [--memory-mb 2048] [--output-mb 10]
-                                   [--uid U --gid G --workdir DIR --hide FOLDER --token T]
+                                   [--uid U --gid G --workdir DIR --token T]
     (python -m dhlab.grading.runner ... works too)
 
 What it does, and why:
@@ -327,7 +327,7 @@ def _extract_code(path: Path) -> str:
 
 def run_notebook(path, timeout: float = 30, total_timeout: float = 120, memory_mb: float = 2048,
                  output_mb: float = 10, pid_file=None, progress_file=None, skip=(), workdir=None,
-                 user=None, hide=(), token: str = "") -> RunResult:
+                 user=None, token: str = "") -> RunResult:
     """Run the notebook at ``path`` in a sandboxed kernel and read its answers (see the module doc).
 
     ``pid_file``: where to write the kernel's process id (so the grader can end it);
@@ -336,7 +336,6 @@ def run_notebook(path, timeout: float = 30, total_timeout: float = 120, memory_m
     not to run; ``workdir``: the kernel's own folder (default: a new temporary one);
     ``user``: (uid, gid) the kernel runs as (the runner must be root: the kernel then gets a
     private root, in which no folder but its own exists, and the submission a control group);
-    ``hide``: kept for older callers, nothing to do (the private root shows nothing else);
     ``token``: put in the kernel's environment.
     """
     started = time.monotonic()
@@ -376,7 +375,7 @@ def run_notebook(path, timeout: float = 30, total_timeout: float = 120, memory_m
                     result.limit = "memory"
                 # nothing of this attempt lives into the next one (a daemon that plants links in
                 # the kernel's folder for the next kernel's start, say)
-                _end_processes(group, user)
+                _end_processes(group)
             skip.add(broken)
             result.skipped = sorted(skip)
             if time.monotonic() > deadline - 2 or attempt == MAX_ATTEMPTS - 1:
@@ -412,7 +411,7 @@ def _submission_group(user, token: str, memory_mb: float, result: RunResult):
     return group
 
 
-def _end_processes(group, user) -> None:
+def _end_processes(group) -> None:
     """End every process of this submission's control group (none: the grader ends the user's
     processes after the submission, :meth:`dhlab.grading.isolation.Isolation.cleanup`). Never all
     of the user's here: a runner does not own its user, its grader does (see :func:`main`)."""
@@ -528,14 +527,13 @@ def main(argv=None) -> int:
     parser.add_argument("--workdir", default=None, help="the kernel's own folder (owned by --uid)")
     parser.add_argument("--uid", type=int, default=None, help="the unprivileged user the kernel runs as")
     parser.add_argument("--gid", type=int, default=None)
-    parser.add_argument("--hide", action="append", default=[], help="a folder the kernel must not see")
     parser.add_argument("--token", default="", help="an opaque mark put in the kernel's environment")
     args = parser.parse_args(argv)
     _die_with_the_grader()
     apply_limits(memory_mb=max(4096, 2 * args.memory_mb), cpu_seconds=None, file_mb=None)
     user = (args.uid, args.gid) if args.uid is not None else None
     result = run_notebook(args.notebook, args.timeout, args.total_timeout, args.memory_mb, args.output_mb,
-                          args.pid_file, args.progress_file, args.skip, args.workdir, user, args.hide, args.token)
+                          args.pid_file, args.progress_file, args.skip, args.workdir, user, args.token)
     out = Path(args.result)
     tmp = out.with_name(out.name + ".tmp")
     tmp.write_text(json.dumps(asdict(result)), encoding="utf-8")

@@ -386,8 +386,6 @@ def main(argv=None) -> None:
     parser.add_argument("--group", action="append", default=[],
                         help="a control group folder to join (the submission's, dhlab.grading.cgroups)")
     parser.add_argument("--report", default=None, help="where to write what did not hold (one line each)")
-    parser.add_argument("--hide", action="append", default=[],
-                        help="a folder the probe checks is out of sight (nothing outside the private root is seen)")
     parser.add_argument("--probe", action="store_true",
                         help="set up the sandbox, check that dhlab imports and cannot be written, and exit")
     parser.add_argument("kernel_args", nargs=argparse.REMAINDER,
@@ -399,7 +397,7 @@ def main(argv=None) -> None:
         rest = _private_connection_file(rest, args.workdir, args.uid, args.gid)
         missing = enter_sandbox(args.uid, args.gid, args.workdir, args.tmp_mb, args.group, args.report)
         if args.probe:
-            _probe(missing, args.hide)
+            _probe(missing)
             return
         if args.group and args.memory_mb and not any("control group" in m for m in missing):
             # the group holds the whole submission to --memory-mb; the address space, which counts
@@ -417,7 +415,7 @@ def main(argv=None) -> None:
     kernelapp.launch_new_instance()
 
 
-def _probe(missing, hide) -> None:
+def _probe(missing) -> None:
     """Exit 0 when the sandbox user can run the kernel and cannot write dhlab; say what is missing."""
     import importlib.util
     spec = importlib.util.find_spec("dhlab")
@@ -427,9 +425,6 @@ def _probe(missing, hide) -> None:
     folder = os.path.dirname(spec.origin)
     if os.access(folder, os.W_OK) or os.access(spec.origin, os.W_OK):
         sys.exit(f"the sandbox user can write dhlab's files in {folder}")
-    for folder in hide:
-        if os.path.isdir(folder) and os.listdir(folder):
-            missing.append(f"the sandbox user can see {folder}")
     print("\n".join(missing))
 
 

@@ -35,19 +35,19 @@ class SelfCheckError(Exception):
     what to do)."""
 
 
-def check(iso, options, hide=()) -> None:
+def check(iso, options) -> None:
     """Grade the teacher's solution the way :func:`dhlab.grading.launch.run_submission` runs a
     submission (``iso``: the batch's :class:`~dhlab.grading.isolation.Isolation`; ``options``: its
     limits, ``options.memory_mb`` included); raise :class:`SelfCheckError` unless it runs without an
     error and earns full marks. Why a whole correct notebook and not a one-line probe: with
     ``--memory-mb 1024`` a probe passed, then every correct notebook scored 0. When the limit is
     the cause, the message names it and a limit that worked."""
-    run, ok = _grade_solution(iso, options, options.memory_mb, hide)
+    run, ok = _grade_solution(iso, options, options.memory_mb)
     if ok:
         return
     larger = max(LARGER_MB, 2 * float(options.memory_mb))
     if run.get("limit") == "memory" or float(options.memory_mb) < LARGER_MB:
-        retry, retry_ok = _grade_solution(iso, options, larger, hide)
+        retry, retry_ok = _grade_solution(iso, options, larger)
         if retry_ok:
             raise SelfCheckError(memory_message(options.memory_mb, larger, run))
         if run.get("limit") == "memory":
@@ -55,7 +55,7 @@ def check(iso, options, hide=()) -> None:
     raise SelfCheckError(explain(iso, run))
 
 
-def _grade_solution(iso, options, memory_mb, hide) -> tuple:
+def _grade_solution(iso, options, memory_mb) -> tuple:
     """(the runner's result, whether it ran without an error and earns full marks) for the
     solution notebook, copied as a submission is (:func:`dhlab.grading.staging.stage`)."""
     from .launch import run_submission
@@ -68,7 +68,7 @@ def _grade_solution(iso, options, memory_mb, hide) -> tuple:
             return {"grader_error": f"{SOLUTION}: {staged.error}"}, False
         limits = SimpleNamespace(timeout=max(60.0, options.timeout), total_timeout=max(120.0, options.total_timeout),
                                  memory_mb=memory_mb, output_mb=options.output_mb)
-        run = run_submission(staged, limits, iso, hide, retries=0)
+        run = run_submission(staged, limits, iso, retries=0)
     finally:
         shutil.rmtree(folder, ignore_errors=True)
     return run, not run.get("grader_error") and not run.get("errors") and _full_marks(run)
