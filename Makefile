@@ -1,11 +1,15 @@
 # dhlab — two commands do everything, on a machine with nothing but Python 3.10+:
-#   make lab    set up .venv (package + Jupyter kernel) and open the course home in JupyterLab
-#               (notebooks/index.ipynb: the English and the Spanish edition start there)
-#   make test   set up .venv and run the whole test suite (pytest + nbval over notebooks/ and notebooks/es/)
+#   make lab    set up .venv (package + Jupyter kernel) and open the course home in JupyterLab, in the
+#               student's own copy of the course, my-notebooks/ (made on the first run from notebooks/,
+#               then only added to: the student's answers stay theirs, git ignores them, git pull never
+#               conflicts; index.ipynb there: the English and the Spanish edition start there)
+#   make test   set up .venv and run the whole test suite (pytest + nbval over notebooks/ and notebooks/es/,
+#               the course; never my-notebooks/)
 # Other targets: make lab-es (the same, JupyterLab's menus in Spanish), make edition (the Spanish
 # notebooks: catalogs updated, stale notebooks rebuilt, everything checked), make test-browser
 # (real-browser tier), make test-nbgrader (nbgrader accepts the PUMA source notebook), make bench
-# (benchmarks), make notebooks (re-execute them, both editions), make clean.
+# (benchmarks), make notebooks (re-execute them, both editions), make clean. The maintainers' tools
+# these run live in tools/ (python -m tools.edition, tools.execute, tools.i18n_catalog), never installed.
 
 PYTHON ?= python3
 VENV   := .venv
@@ -32,10 +36,14 @@ $(READY):
 	  > $(VENV)/share/jupyter/lab/settings/overrides.json
 	touch $@
 
-LAB_ARGS := --ServerApp.root_dir=notebooks --LabApp.default_url=/lab/tree/index.ipynb $(if $(filter 0,$(shell id -u)),--allow-root)
+# the student's own copy of the course, where JupyterLab opens (tools/student_copy.py): made from
+# notebooks/ on the first run; later runs add the course's new notebooks and never change the student's
+MY_NOTEBOOKS := my-notebooks
+LAB_ARGS := --ServerApp.root_dir=$(MY_NOTEBOOKS) --LabApp.default_url=/lab/tree/index.ipynb $(if $(filter 0,$(shell id -u)),--allow-root)
 LAB_ES   := $(VENV)/share/jupyter/lab/settings-es
 
 lab: $(READY)
+	$(BIN)/python -m tools.student_copy $(MY_NOTEBOOKS)
 	$(BIN)/jupyter lab $(LAB_ARGS)
 
 # JupyterLab's own menus in Spanish (the language pack jupyterlab-language-pack-es-ES, installed with
@@ -45,15 +53,17 @@ lab-es: $(READY)
 	mkdir -p $(LAB_ES)
 	$(BIN)/python -c 'import json, sys; s = json.load(open(sys.argv[1])); s["@jupyterlab/translation-extension:plugin"] = {"locale": "es_ES"}; json.dump(s, open(sys.argv[2], "w"))' \
 	  $(VENV)/share/jupyter/lab/settings/overrides.json $(LAB_ES)/overrides.json
+	$(BIN)/python -m tools.student_copy $(MY_NOTEBOOKS)
 	$(BIN)/jupyter lab $(LAB_ARGS) --LabApp.app_settings_dir=$(LAB_ES)
 
-# The Spanish edition (notebooks/es/, from the English notebooks and dhlab/locale/es/notebooks/*.po):
+# The Spanish edition (notebooks/es/, from the English notebooks and tools/locale/es/notebooks/*.po):
 # catalogs brought in step with the English (a changed cell becomes fuzzy), the notebooks whose
-# catalog is complete rebuilt and executed if stale, the course home rewritten, then every check.
+# catalog is complete rebuilt and executed if stale (and the assignment's Spanish text the package
+# ships, dhlab/grading/template/), the course home rewritten, then every check.
 edition: $(READY)
-	$(BIN)/python -m dhlab.course.edition extract
-	$(BIN)/python -m dhlab.course.edition build --if-stale
-	$(BIN)/python -m dhlab.course.edition check
+	$(BIN)/python -m tools.edition extract
+	$(BIN)/python -m tools.edition build --if-stale
+	$(BIN)/python -m tools.edition check
 
 test: $(READY)
 	$(BIN)/python -m pytest $(XDIST)
@@ -82,12 +92,14 @@ bench: $(READY)
 # Re-execute every notebook in place (finite timeout), so stored outputs match the code (the
 # Spanish ones are rebuilt from the English and their catalogs, and executed);
 # the student version of the PUMA assignment is generated from its source (the teacher's
-# solutions, kept out of notebooks/ as package data), not executed.
+# solutions, tools/teacher/: out of notebooks/ and out of the package), not executed: written as
+# notebooks/08_puma_assignment.ipynb and as the package's copy dhlab-assign starts from.
 notebooks: $(READY)
-	$(BIN)/python -m dhlab.execute $(filter-out notebooks/08_puma_assignment.ipynb notebooks/index.ipynb,$(wildcard notebooks/*.ipynb)) dhlab/grading/data/08_puma_assignment.ipynb
+	$(BIN)/python -m tools.execute $(filter-out notebooks/08_puma_assignment.ipynb notebooks/index.ipynb,$(wildcard notebooks/*.ipynb)) tools/teacher/08_puma_assignment.ipynb
 	$(BIN)/python -m dhlab.grading.generate
-	$(BIN)/python -m dhlab.course.edition build
+	$(BIN)/python -m tools.edition build
 
+# (never my-notebooks/: the student's answers)
 clean:
 	rm -rf $(VENV) .pytest_cache build *.egg-info
 
@@ -106,7 +118,8 @@ $(LITE_READY):
 	$(LITE_VENV)/bin/python -m pip install --quiet -r lite/requirements.txt
 	touch $@
 
-lite: $(LITE_READY)
+# the docs are built first so that the site carries them under docs/
+lite: $(LITE_READY) docs
 	$(LITE_VENV)/bin/python lite/build.py
 
 lite-serve:
@@ -117,3 +130,17 @@ lite-serve:
 test-lite: $(READY) lite
 	bash tests/browser/setup.sh
 	$(BIN)/python -m pytest tests/lite --lite -p no:xdist
+
+# The docs site (docs/, MyST Markdown + Sphinx, API reference from the docstrings): docs/_build/html.
+# Warnings are errors and every internal link and cross-reference must resolve (-W -n: Sphinx's own
+# checks, offline, what CI runs). `make docs-linkcheck` also tries every external link: it needs
+# the network (CI's machine reaches only PyPI, so CI runs the offline check only).
+DOCS_BUILD := docs/_build
+.PHONY: docs docs-linkcheck
+
+docs: $(READY)
+	$(BIN)/python -m sphinx -b html -E -W --keep-going -n -q docs $(DOCS_BUILD)/html
+	@echo "built $(DOCS_BUILD)/html/index.html"
+
+docs-linkcheck: $(READY)
+	$(BIN)/python -m sphinx -b linkcheck -q docs $(DOCS_BUILD)/linkcheck

@@ -46,7 +46,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 KINDS = {                       # notebook -> the score it must get
-    ROOT / "dhlab" / "grading" / "data" / "08_puma_assignment.ipynb": 10.0,
+    ROOT / "tools" / "teacher" / "08_puma_assignment.ipynb": 10.0,
     ROOT / "tests" / "data" / "submissions" / "valid_alternative.ipynb": 10.0,
     ROOT / "tests" / "data" / "submissions" / "mistake_part1.ipynb": 9.5,
     ROOT / "tests" / "data" / "submissions" / "mistake_part2.ipynb": 9.14,
@@ -74,7 +74,7 @@ def make_variant_class(folder: Path, n: int) -> tuple:
     import numpy as np
     sys.path.insert(0, str(ROOT / "tests"))
     from test_grade_variants import released_robot, solved
-    from dhlab.course.family_model import random_valid_frames
+    from dhlab.assignment.model import random_valid_frames
     from dhlab.grading import release as R
     secret = folder.parent / "secret.key"
     secret.write_bytes(b"benchmark-secret-0123456789abcdef\n")

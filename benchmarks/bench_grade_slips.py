@@ -70,9 +70,9 @@ def _count_named(counts: dict, slipped: int, report) -> None:
 def sweep(per_family: int, pairs: int, seed: int) -> dict:
     from test_variants import (_links_not_in_their_frames, _lost, _moves_like, _namespace_from_rows, _report,
                                _rows_in_degrees)
-    from dhlab.course.family import family_names
-    from dhlab.course.family_model import random_valid_frames
-    from dhlab.grading import variants as V
+    from dhlab.assignment import variants as V
+    from dhlab.assignment.family import family_names
+    from dhlab.assignment.model import random_valid_frames
     rng = np.random.default_rng(seed)
     out = {}
     for key in family_names():

@@ -23,7 +23,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from dhlab.grading import variants as V  # noqa: E402
+from dhlab.assignment import variants as V  # noqa: E402
 
 SECRET = b"benchmark-secret-0123456789abcdef"
 

@@ -3,7 +3,9 @@
     python benchmarks/run_all.py            # or: make bench   (make bench RTB=1 adds the Robotics Toolbox)
 
 Each ``bench_*.py`` prints its own table (methods side by side in one run, with
-ratios); the JSON results go to ``benchmarks/results/`` (not committed).
+ratios); the JSON results go to ``benchmarks/results/`` (not committed). Among them
+``bench_import.py``: ``import dhlab`` beside ``import roboticstoolbox`` (when this
+interpreter has the toolbox), each in a fresh interpreter.
 """
 from __future__ import annotations
 

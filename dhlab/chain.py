@@ -24,11 +24,10 @@ import time
 from dataclasses import dataclass, field
 
 import numpy as np
-import sympy as sp
 
 from . import kinematics
 from .i18n import _
-from .symbolic import chain_product, compact, exact, exact_angle, exact_length, legend, simplify_chain
+from .lazy_sympy import has_symbols, is_matrix, is_symbol, is_sympy
 from .transforms import Rx, Ry, Rz, trans
 from .units import Angle
 from .validation import (FULL_TURN, DHLabError, as_angle, as_choice, as_flag, as_index, as_length,
@@ -36,6 +35,9 @@ from .validation import (FULL_TURN, DHLabError, as_angle, as_choice, as_flag, as
                          describe, rigid_problem)
 
 __all__ = ["Factor", "Rot", "Move", "Link", "Robot"]
+
+# The symbolic side (fk_sym, A(i), compact) needs sympy, which takes longer to import than the rest
+# of dhlab: :mod:`dhlab.symbolic` is imported inside the methods that use it, on their first call.
 
 AXES = {"x": 0, "y": 1, "z": 2}
 SYMPY_CONSTANTS = {"pi": "π", "E": "Euler's number e", "I": "the imaginary unit", "oo": "infinity",
@@ -73,7 +75,7 @@ class Factor:
             value = as_angle(self.value, name + " (radians)", symbolic=True)
         else:
             value = as_length(self.value, name + " (a length)", symbolic=True)
-        keep = isinstance(value, sp.Basic) or not isinstance(self.value, Angle)
+        keep = is_sympy(value) or not isinstance(self.value, Angle)
         object.__setattr__(self, "value", value if keep else self.value)   # deg2rad() values keep their repr
 
     def matrix(self, q=0):
@@ -81,7 +83,8 @@ class Factor:
         value = self.value
         if self.joint:
             q = _joint_value(q, self.kind)
-        if isinstance(q, sp.Basic):
+        if is_sympy(q):
+            from .symbolic import exact_angle, exact_length
             value = exact_angle(value) if self.kind == "R" else exact_length(value)
         amount = value + self.sign * q if self.joint else value
         if self.kind == "R":
@@ -123,9 +126,10 @@ def _joint_value(q, kind: str):
 
 def _within_a_turn(angle):
     """offset + q may pass a full turn though each is within one: the same rotation, one turn less."""
-    if isinstance(angle, sp.Basic) and angle.free_symbols or abs(float(angle)) <= FULL_TURN:
+    if has_symbols(angle) or abs(float(angle)) <= FULL_TURN:
         return angle
-    if isinstance(angle, sp.Basic):
+    if is_sympy(angle):
+        import sympy as sp      # (loaded already: the angle is a sympy value)
         return angle - sp.sign(angle) * 2 * sp.pi
     return angle - math.copysign(FULL_TURN, angle)
 
@@ -184,7 +188,7 @@ class Link:
         q = _joint_value(q, self.joint.kind)       # checked before any factor uses it
         M = self.factors[0].matrix(q)
         for f in self.factors[1:]:
-            M = M * f.matrix(q) if isinstance(M, sp.MatrixBase) else M @ f.matrix(q)
+            M = M * f.matrix(q) if is_matrix(M) else M @ f.matrix(q)
         return M
 
 
@@ -193,18 +197,19 @@ class Robot:
 
     ``params`` gives numbers to the symbols used in the links (e.g.
     ``{"l1": 0.7}``); ``joint_symbols`` names the joint variables (default
-    ``q1 … qn``). Joint values are radians for revolute joints and the robot's
+    ``q1 … qn``: ``robot.joint_names``, and as sympy symbols ``robot.q_symbols``, made on
+    first use). Joint values are radians for revolute joints and the robot's
     length unit for prismatic ones.
     """
 
     def __init__(self, links, name: str = "robot", base=None, tool=None,
                  params=None, joint_symbols=None, unit: str = ""):
-        self.links = _link_list(links)
+        self.links = link_list(links)
         self.name = as_text(name, "name")
         self.unit = as_text(unit, "unit")
-        self.params = _numeric_params(params)
-        self.q_symbols = _joint_symbols(joint_symbols, self.n)
-        clash = sorted(set(self.params) & {s.name for s in self.q_symbols})
+        self.params = numeric_params(params)
+        self.joint_names = _joint_names(joint_symbols, self.n)
+        clash = sorted(set(self.params) & set(self.joint_names))
         if clash:
             raise DHLabError(_("{name} is both a joint variable and a parameter with a fixed value "
                                "(params={{{name!r}: ...}}): rename the parameter or the joint.").format(
@@ -255,7 +260,7 @@ class Robot:
         is: an angle for a rotation ('R'), a length for a translation ('T')."""
         value, kind = factor.value, factor.kind
         where = _("link {link} ({factor})").format(link=link, factor=factor)
-        if isinstance(value, sp.Basic) and value.free_symbols:
+        if has_symbols(value):
             names = sorted(str(s) for s in value.free_symbols)
             missing = [s for s in names if s not in self.params]
             if missing:
@@ -289,7 +294,13 @@ class Robot:
     @property
     def joint_labels(self) -> list:
         """Display names of the joint variables, e.g. ['q1', 'q2'] or ['θ0', 'θ1']."""
-        return [_label(s) for s in self.q_symbols]
+        return [_label(s) for s in self.joint_names]
+
+    @functools.cached_property
+    def q_symbols(self) -> tuple:
+        """The joint variables as real sympy symbols (``joint_symbols``, default q1 … qn)."""
+        import sympy as sp      # (the symbolic side: imported on first use)
+        return tuple(sp.Symbol(s, real=True) for s in self.joint_names)
 
     @property
     def numeric_links(self) -> list:
@@ -333,6 +344,7 @@ class Robot:
         i = as_index(i, "link index i", 1, self.n)
         link = self.links[i - 1]
         if q is None:
+            from .symbolic import exact
             return exact(link.A(self.q_symbols[i - 1]))
         values = [0.0] * self.n
         values[i - 1] = _one_value(q, i)
@@ -363,6 +375,7 @@ class Robot:
     # --- symbolic kinematics -------------------------------------------------------
     def link_matrices_sym(self):
         """The symbolic ^{i-1}A_i of every link, exact (degrees like 90° become π/2)."""
+        from .symbolic import exact
         return [exact(link.A(s)) for link, s in zip(self.links, self.q_symbols)]
 
     def fk_sym(self, simplify: bool = False, timeout: float | None = 60.0):
@@ -374,6 +387,9 @@ class Robot:
         no limit) it stops with a DHLabError; the kernel's stop button
         (KeyboardInterrupt) stops it at any time.
         """
+        import sympy as sp
+
+        from .symbolic import chain_product, exact, simplify_chain
         simplify = as_flag(simplify, "simplify")
         timeout = as_timeout(timeout)
         start = time.monotonic()                  # the timeout counts building the blocks too
@@ -391,10 +407,12 @@ class Robot:
 
     def compact(self, M):
         """``M`` in the slides' notation for this robot's joints: C1, S23, … (for reading)."""
+        from .symbolic import compact
         return compact(M, self.q_symbols)
 
     def legend(self, M) -> str:
         """What the names in ``compact(M)`` stand for, e.g. 'C1 = cos(q1), S23 = sin(q2 + q3)'."""
+        from .symbolic import legend
         return legend(M, self.q_symbols)
 
     def _sym_blocks(self):
@@ -402,7 +420,7 @@ class Robot:
         return self.link_matrices_sym()
 
 
-def _link_list(links, expected=None, what: str = "a Link (or RevoluteDH / PrismaticDH)") -> list:
+def link_list(links, expected=None, what: str = "a Link (or RevoluteDH / PrismaticDH)") -> list:
     """The robot's links as a list of ``expected`` (default :class:`Link`), or a clear error."""
     if isinstance(links, (str, bytes, dict, Link)) or not hasattr(links, "__iter__"):
         raise DHLabError(_("a robot takes a list of links, e.g. [RevoluteDH(a=1), RevoluteDH(a=0.5)]; "
@@ -420,8 +438,8 @@ def _link_list(links, expected=None, what: str = "a Link (or RevoluteDH / Prisma
     return links
 
 
-def _joint_symbols(names, n: int) -> tuple:
-    """The joint variables as real sympy symbols: default q1 … qn; names must be distinct."""
+def _joint_names(names, n: int) -> tuple:
+    """The names of the joint variables (text or sympy symbols): default q1 … qn; names must be distinct."""
     if names is None:
         names = [f"q{i + 1}" for i in range(n)]
     if isinstance(names, (str, bytes, dict)) or not hasattr(names, "__iter__"):
@@ -437,7 +455,7 @@ def _joint_symbols(names, n: int) -> tuple:
             n=n, count=len(names), got=describe(names)))
     text = []
     for k, s in enumerate(names):
-        if isinstance(s, sp.Symbol):
+        if is_symbol(s):
             s = s.name
         if not isinstance(s, str) or not s.isidentifier():
             raise DHLabError(_("joint_symbols[{k}] must be a name such as 'q{k1}' or 'theta{k1}', got {got}.").format(
@@ -451,17 +469,17 @@ def _joint_symbols(names, n: int) -> tuple:
     if repeated:
         raise DHLabError(_("joint_symbols name {name!r} twice: every joint needs its own variable, "
                            "or two joints would merge into one in fk_sym().").format(name=repeated[0]))
-    return tuple(sp.Symbol(s, real=True) for s in text)
+    return tuple(text)
 
 
 def _one_value(q, i: int):
     """The value of joint i: as given, or the element of a one-element list or array (checked later)."""
     if isinstance(q, np.ma.MaskedArray) and q.size == 1:          # keep a missing value missing
         return np.ma.masked if np.ma.is_masked(q) else q.data.ravel()[0]
-    if isinstance(q, np.ndarray) and q.ndim == 0 or not isinstance(q, (list, tuple, np.ndarray, sp.MatrixBase)):
+    if isinstance(q, np.ndarray) and q.ndim == 0 or not (isinstance(q, (list, tuple, np.ndarray)) or is_matrix(q)):
         return q
     try:
-        arr = None if isinstance(q, sp.MatrixBase) else np.asarray(q, dtype=object).ravel()
+        arr = None if is_matrix(q) else np.asarray(q, dtype=object).ravel()
     except (ValueError, TypeError):          # ragged beyond what an object array holds
         arr = None
     if arr is None or arr.size != 1:
@@ -469,7 +487,7 @@ def _one_value(q, i: int):
     return arr[0]
 
 
-def _numeric_params(params) -> dict:
+def numeric_params(params) -> dict:
     """Robot parameters as {name: float}, refusing anything that is not a finite number."""
     if params is None:
         return {}
@@ -478,10 +496,10 @@ def _numeric_params(params) -> dict:
             got=describe(params)))
     out = {}
     for key, value in params.items():
-        name = key.name if isinstance(key, sp.Symbol) else key
+        name = key.name if is_symbol(key) else key
         if not isinstance(name, str) or not name.isidentifier():
             raise DHLabError(_("params keys must be names such as 'l1', got {got}.").format(got=describe(key)))
-        if isinstance(value, sp.Basic) and value.free_symbols or isinstance(value, str):
+        if has_symbols(value) or isinstance(value, str):
             raise DHLabError(_("parameter {name} = {value!r} must be a finite number (a length or an angle in "
                                "radians).").format(name=name, value=value))
         number = as_number(value, _("parameter {name}").format(name=name))

@@ -24,16 +24,14 @@ import math
 import re
 
 import numpy as np
-import sympy as sp
 
-from .chain import Link, Move, Robot, Rot, _link_list, _numeric_params
+from .chain import Link, Move, Robot, Rot, link_list, numeric_params
 from .i18n import N_, _
-from .symbolic import exact_angle, exact_length
+from .lazy_sympy import is_sympy
 from .table import DHTable
 from .transforms import Rx, Rz
-from .units import Angle
-from .units import has_angle_mark
-from .validation import DHLabError, as_angle, as_choice, as_length, as_number, as_sequence, describe
+from .validation import (Angle, DHLabError, as_angle, as_choice, as_length, as_number, as_sequence, describe,
+                         has_angle_mark)
 
 __all__ = ["RevoluteDH", "PrismaticDH", "DHRobot"]
 
@@ -45,7 +43,7 @@ def _check_angle_param(value, name: str):
                            "sympy expression. Tables typed as text go through DHRobot.from_table.").format(
                                name=name, value=value))
     checked = as_angle(value, name, symbolic=True)
-    return checked if isinstance(checked, sp.Basic) or not isinstance(value, Angle) else value
+    return checked if is_sympy(checked) or not isinstance(value, Angle) else value
 
 
 def _check_length_param(value, name: str):
@@ -118,7 +116,7 @@ class DHRobot(Robot):
     def __init__(self, links, name: str = "robot", base=None, tool=None,
                  params=None, joint_symbols=None, unit: str = ""):
         _no_modified_links(links)
-        links = _link_list(links, DHLink, "RevoluteDH(...) or PrismaticDH(...) (for other products of "
+        links = link_list(links, DHLink, "RevoluteDH(...) or PrismaticDH(...) (for other products of "
                                           "motions use dhlab.Robot)")
         super().__init__(links, name=name, base=base, tool=tool, params=params,
                          joint_symbols=joint_symbols, unit=unit)
@@ -133,6 +131,7 @@ class DHRobot(Robot):
     def _sym_blocks(self):
         """Link matrices, with each run of revolute joints about parallel axes
         (α = 0 between them) written as one block in the sums of their angles."""
+        from .symbolic import exact_angle          # (sympy: imported on first symbolic use)
         matrices = self.link_matrices_sym()          # once: each call builds all n
         blocks, i = [], 0
         while i < self.n:
@@ -147,6 +146,9 @@ class DHRobot(Robot):
     def _run_block(self, first: int, last: int):
         """A_first ··· A_last for revolute links whose α are 0 except the last one's:
         [Rz(φ_last)·Rx(α_last) | (Σ a_j cos φ_j, Σ a_j sin φ_j, Σ d_j)], φ_j the partial sums."""
+        import sympy as sp
+
+        from .symbolic import exact_angle, exact_length
         phi, p = 0, sp.zeros(3, 1)
         for k in range(first, last + 1):
             link = self.links[k]
@@ -177,14 +179,15 @@ class DHRobot(Robot):
 def links_from_table(rows, params, angles, qlim, revolute, prismatic) -> tuple:
     """The links of a table typed as on the slides (see :meth:`DHRobot.from_table`), made by
     the link classes ``revolute`` and ``prismatic``: (links, joint symbols, params)."""
+    import sympy as sp          # a typed table is read as sympy expressions
     angles = as_choice(angles, ("deg", "rad"), "angles")
-    params = _numeric_params(params)
-    rows = _rows(rows)
+    params = numeric_params(params)
+    rows = table_rows(rows)
     limits_per_row = _table_qlim(qlim, len(rows))
     to_rad = (lambda e: e * sp.pi / 180) if angles == "deg" else (lambda e: e)
     links, symbols = [], []
     for i, row in enumerate(rows, start=1):
-        theta, d, a, alpha = (_parse(v, _("row {i}, {column}").format(i=i, column=col),
+        theta, d, a, alpha = (parse_entry(v, _("row {i}, {column}").format(i=i, column=col),
                                      col in "θα" and angles == "deg", col in "da")
                               for v, col in zip(row, "θdaα"))
         limits = limits_per_row[i - 1]
@@ -239,7 +242,7 @@ def _no_marked_angles(params, angles: dict, i: int) -> None:
                                                            degrees=math.degrees(value)))
 
 
-def _rows(rows) -> list:
+def table_rows(rows) -> list:
     """The table as a list of rows of 4 entries, or a clear error."""
     example = "[('q1', 0, 1, 0), ('q2', 0, 0.5, 0)]"
     rows = as_sequence(rows, _("the table"), _("a list of rows (θ, d, a, α), e.g. {example}").format(example=example))
@@ -276,8 +279,9 @@ def _degrees_to_radians(limits, name: str) -> tuple:
 _TEXT = re.compile(r"[\w\s+\-*/().]*")
 
 
-def _parse(value, where: str, degrees: bool = False, length: bool = False):
+def parse_entry(value, where: str, degrees: bool = False, length: bool = False):
     """A table entry as a sympy number or expression, checked (finite, real)."""
+    import sympy as sp          # a typed table is read as sympy expressions
     if degrees and has_angle_mark(value):
         raise DHLabError(_("{where} = {value!r} is already in radians (made by deg2rad()), but this table's "
                            "angles are degrees: write the plain number of degrees (e.g. 90), or pass "
@@ -297,7 +301,7 @@ def _parse(value, where: str, degrees: bool = False, length: bool = False):
         except (sp.SympifyError, SyntaxError, TypeError, ValueError, AttributeError, ZeroDivisionError):
             raise DHLabError(_("{where}: cannot read {value!r} as a number or an expression like 'q2 + 90'.").format(
                 where=where, value=value)) from None
-    if isinstance(value, sp.Basic):
+    if is_sympy(value):
         value = as_number(value, where, symbolic=True)
     else:
         number = as_number(value, where)
@@ -305,6 +309,9 @@ def _parse(value, where: str, degrees: bool = False, length: bool = False):
     if degrees:
         _check_degrees(value, where)
     return value
+
+
+_parse = parse_entry     # its old private name (dhlab/course/predict.py), for one release
 
 
 def _check_degrees(value, where: str) -> None:
@@ -326,7 +333,7 @@ def _joint_symbol(expr, params):
 
 
 def _offset(expr, q, where: str):
-    offset = sp.expand(expr - q)
+    offset = (expr - q).expand()
     if offset.has(q):
         raise DHLabError(_("{where}: the joint variable must appear as '+{q}', got {expr}.").format(
             where=where, q=q, expr=expr))

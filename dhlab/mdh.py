@@ -42,11 +42,11 @@ only the base, the joint axes and the end effector are the same.
 """
 from __future__ import annotations
 
-import sympy as sp
-
-from .chain import Robot, _link_list
+from .chain import Robot, link_list
+from .dh import (DHParameters, DHRobot, PrismaticDH, RevoluteDH, links_from_table, parse_entry, refuse_convention,
+                 table_rows)
 from .i18n import N_, _
-from .dh import DHParameters, DHRobot, PrismaticDH, RevoluteDH, _parse, _rows, links_from_table, refuse_convention
+from .lazy_sympy import has_symbols, is_matrix
 from .table import DHTable
 from .transforms import Rx, Rz, trans
 from .validation import DHLabError, describe
@@ -65,7 +65,8 @@ def mdh_matrix(theta, d, a, alpha):
     Matrix([[a, -d*sin(alpha), d*cos(alpha), 1]])
     """
     factors = [Rx(alpha), trans(a, 0, 0), Rz(theta), trans(0, 0, d)]   # each checks its value
-    if any(isinstance(M, sp.MatrixBase) for M in factors):
+    if any(is_matrix(M) for M in factors):
+        import sympy as sp      # (loaded already: a factor is a sympy Matrix)
         return sp.Matrix(factors[0]) * sp.Matrix(factors[1]) * sp.Matrix(factors[2]) * sp.Matrix(factors[3])
     return factors[0] @ factors[1] @ factors[2] @ factors[3]
 
@@ -108,7 +109,7 @@ class MDHRobot(Robot):
         refuse_convention(links, "standard", N_("standard DH"),
                           N_("an MDHRobot is modified DH (Craig). Use RevoluteMDH / PrismaticMDH, or build a "
                              "dhlab.DHRobot and convert it with dhlab.to_modified(robot)."))
-        links = _link_list(links, MDHLink, "RevoluteMDH(...) or PrismaticMDH(...)")
+        links = link_list(links, MDHLink, "RevoluteMDH(...) or PrismaticMDH(...)")
         super().__init__(links, name=name, base=base, tool=tool, params=params,
                          joint_symbols=joint_symbols, unit=unit)
 
@@ -129,7 +130,7 @@ class MDHRobot(Robot):
 # --- converting: the same robot in the other convention ------------------------------------------
 def _number(value, robot) -> float:
     """A link parameter (a number or an expression in the robot's params) as a float."""
-    if isinstance(value, sp.Basic) and value.free_symbols:
+    if has_symbols(value):
         value = value.subs({s: robot.params[str(s)] for s in value.free_symbols})
     return float(value)
 
@@ -161,7 +162,7 @@ def to_modified(robot) -> MDHRobot:
     last = robot.links[-1]
     tool = trans(_number(last.a, robot), 0, 0) @ Rx(_number(last.alpha, robot)) @ robot.tool
     return MDHRobot(links, name=f"{robot.name} (modified DH)", base=robot.base, tool=tool, params=robot.params,
-                    joint_symbols=robot.q_symbols, unit=robot.unit)
+                    joint_symbols=robot.joint_names, unit=robot.unit)
 
 
 def to_standard(robot) -> DHRobot:
@@ -175,15 +176,15 @@ def to_standard(robot) -> DHRobot:
     first = robot.links[0]
     base = robot.base @ Rx(_number(first.alpha, robot)) @ trans(_number(first.a, robot), 0, 0)
     return DHRobot(links, name=f"{robot.name} (standard DH)", base=base, tool=robot.tool, params=robot.params,
-                   joint_symbols=robot.q_symbols, unit=robot.unit)
+                   joint_symbols=robot.joint_names, unit=robot.unit)
 
 
 def _typed_rows(rows) -> list:
     """The rows as tuples, each entry checked as :meth:`~dhlab.DHRobot.from_table` reads it
     (the entries are returned as typed: ``"q2 - 90"`` stays text)."""
-    rows = [tuple(row) for row in _rows(rows)]
+    rows = [tuple(row) for row in table_rows(rows)]
     for i, row in enumerate(rows, start=1):
-        theta, d, _a, _alpha = (_parse(value, _("row {i}, {column}").format(i=i, column=column),
+        theta, d, _a, _alpha = (parse_entry(value, _("row {i}, {column}").format(i=i, column=column),
                                        length=column in "da") for value, column in zip(row, "θdaα"))
         if not (theta.free_symbols or d.free_symbols):
             raise DHLabError(_("row {i} {row!r} has no joint variable: θ (revolute) or d (prismatic) must "

@@ -12,8 +12,6 @@ can be changed by keyword. Lengths keep their symbols (``l1`` …) so that
 """
 from __future__ import annotations
 
-import sympy as sp
-
 from .chain import Link, Move, Robot, Rot
 from .dh import DHRobot
 from .i18n import _
@@ -25,7 +23,13 @@ __all__ = [
     "seed002_4dof", "seed002_6dof", "seed003_6dof", "ssrms", "puma560", "catalogue",
 ]
 
-L1, L2, L3, L4, L = sp.symbols("l1 l2 l3 l4 l")
+
+
+def _symbol(name: str):
+    """The sympy symbol of a length of a drawing (``l1`` …), so that ``fk_sym()`` prints like the slides.
+    (sympy is imported here, when a robot is built, not when dhlab is imported.)"""
+    import sympy as sp
+    return sp.Symbol(name)
 
 
 def _lengths(**lengths) -> dict:
@@ -50,8 +54,8 @@ def robot_no_tan_elemental_1(l1: float = 0.70, l2: float = 0.30) -> Robot:
 
     ⁰H₁ = Rz(θ0)·Tr(0, l1, 0) (link 1 lies along y0 at rest), ¹H₂ = Rz(θ1)·Tr(l2, 0, 0).
     """
-    return Robot([Link([Rot("z", joint=True), Move("y", L1)], name="link 1"),
-                  Link([Rot("z", joint=True), Move("x", L2)], name="link 2")],
+    return Robot([Link([Rot("z", joint=True), Move("y", _symbol("l1"))], name="link 1"),
+                  Link([Rot("z", joint=True), Move("x", _symbol("l2"))], name="link 2")],
                  name=_("robot no tan elemental 1 (seed 004)"), params=_lengths(l1=l1, l2=l2),
                  joint_symbols=("theta0", "theta1"), unit="m")
 
@@ -62,7 +66,7 @@ def robot_no_tan_elemental_2(l: float = 0.70, d_max: float = 0.30) -> Robot:
 
     ⁰H₁ = Rz(θ)·Tr(0, l, 0), ¹H₂ = Tr(0, d, 0).
     """
-    return Robot([Link([Rot("z", joint=True), Move("y", L)], name="link 1"),
+    return Robot([Link([Rot("z", joint=True), Move("y", _symbol("l"))], name="link 1"),
                   Link([Move("y", joint=True)], name="link 2", qlim=(0.0, _link_length(d_max, "d_max")))],
                  name=_("robot no tan elemental 2 (seed 004)"), params=_lengths(l=l),
                  joint_symbols=("theta", "d"), unit="m")
@@ -72,8 +76,8 @@ def pr_mechanism(l1: float = 1.0, l2: float = 0.5, q1_range=(0.0, 2.0)) -> Robot
     """Seed 003's prismatic-rotational mechanism: x = q1 + l1 + l2·cos q2, y = l2·sin q2,
     i.e. Tr(q1 + l1, 0, 0)·Rz(q2)·Tr(l2, 0, 0). l1 = 1, l2 = 0.5: verifier's choice
     (the seed gives no unit, so none is shown)."""
-    return Robot([Link([Move("x", L1, joint=True)], name="slider", qlim=q1_range),
-                  Link([Rot("z", joint=True), Move("x", L2)], name="arm")],
+    return Robot([Link([Move("x", _symbol("l1"), joint=True)], name="slider", qlim=q1_range),
+                  Link([Rot("z", joint=True), Move("x", _symbol("l2"))], name="arm")],
                  name=_("P-R mechanism (seed 003)"), params=_lengths(l1=l1, l2=l2))
 
 
@@ -88,9 +92,10 @@ def prr_example(l1=1.0, l2=0.5, l3=2.0, l4=1.5) -> DHRobot:
 def prr_example_matrices(l1=1.0, l2=0.5, l3=2.0, l4=1.5) -> Robot:
     """The same P-R-R by homogeneous matrices:
     Tr(0,0,q1+l1)·Tr(l2,0,0) · Ry(q2)·Tr(0,0,l3) · Ry(q3)·Tr(0,0,l4)."""
-    return Robot([Link([Move("z", L1, joint=True), Move("x", L2)], name="slider", qlim=(0.0, 1.0)),
-                  Link([Rot("y", joint=True), Move("z", L3)], name="link 2"),
-                  Link([Rot("y", joint=True), Move("z", L4)], name="link 3")],
+    return Robot([Link([Move("z", _symbol("l1"), joint=True), Move("x", _symbol("l2"))], name="slider",
+                       qlim=(0.0, 1.0)),
+                  Link([Rot("y", joint=True), Move("z", _symbol("l3"))], name="link 2"),
+                  Link([Rot("y", joint=True), Move("z", _symbol("l4"))], name="link 3")],
                  name=_("P-R-R example by matrices (seed 003)"), params=_lengths(l1=l1, l2=l2, l3=l3, l4=l4))
 
 
@@ -108,9 +113,9 @@ def rrr_example(l1=1.0, l2=2.0, l3=1.5) -> DHRobot:
 
 def rrr_example_matrices(l1=1.0, l2=2.0, l3=1.5) -> Robot:
     """The same 3R by homogeneous matrices: Tr(l1,0,0)·Rx(q1) · Rz(−q2)·Tr(0,l2,0) · Rz(−q3)·Tr(0,l3,0)."""
-    return Robot([Link([Move("x", L1), Rot("x", joint=True)], name="link 1"),
-                  Link([Rot("z", joint=True, sign=-1), Move("y", L2)], name="link 2"),
-                  Link([Rot("z", joint=True, sign=-1), Move("y", L3)], name="link 3")],
+    return Robot([Link([Move("x", _symbol("l1")), Rot("x", joint=True)], name="link 1"),
+                  Link([Rot("z", joint=True, sign=-1), Move("y", _symbol("l2"))], name="link 2"),
+                  Link([Rot("z", joint=True, sign=-1), Move("y", _symbol("l3"))], name="link 3")],
                  name=_("3R example by matrices (seed 003)"), params=_lengths(l1=l1, l2=l2, l3=l3))
 
 

@@ -31,9 +31,10 @@ from sympy.simplify.fu import TR10i
 from sympy.utilities.exceptions import SymPyDeprecationWarning
 
 from .i18n import _
+from .validation import DHLabError, as_angle, as_length, as_number, describe
 
 __all__ = ["exact", "exact_angle", "exact_length", "chain_product", "simplify_chain", "compact", "legend",
-           "count_ops", "tree_size"]
+           "check_finite_entries", "count_ops", "tree_size"]
 
 GREEK = {"theta": "θ", "alpha": "α", "phi": "φ", "psi": "ψ", "beta": "β", "gamma": "γ"}
 _NICE = [(sp.Integer(0), 0.0), (sp.Integer(1), 1.0), (sp.Rational(1, 2), 0.5),
@@ -42,7 +43,6 @@ _NICE = [(sp.Integer(0), 0.0), (sp.Integer(1), 1.0), (sp.Rational(1, 2), 0.5),
 
 def exact_angle(value):
     """A radian value as an exact multiple of π when it is a whole number of degrees."""
-    from .validation import as_angle
     value = as_angle(value, "the angle (radians)", symbolic=True, turns=100)
     if isinstance(value, sp.Basic):
         return value
@@ -54,7 +54,6 @@ def exact_angle(value):
 
 def exact_length(value):
     """A number as a small fraction when it is one (2.5 -> 5/2), else a float."""
-    from .validation import as_length
     value = as_length(value, "the length", symbolic=True)
     if isinstance(value, sp.Basic):
         return value
@@ -117,7 +116,6 @@ def _deadline(timeout):
 
 def _check_time(deadline):
     if deadline is not None and time.monotonic() > deadline:
-        from .validation import DHLabError
         raise DHLabError(_(
             "fk_sym(simplify=True) stopped: it ran out of time (the timeout option, in seconds). "
             "Pass a larger timeout (or timeout=None for no limit), use simplify=False, which is fast "
@@ -188,9 +186,8 @@ def _compact_name(f, q_symbols):
     return ("C" if isinstance(f, sp.cos) else "S") + joiner.join(labels)
 
 
-def _check_finite_entries(M, who: str) -> None:
+def check_finite_entries(M, who: str) -> None:
     """Refuse a matrix or expression holding nan, zoo or ±oo, naming the first such entry."""
-    from .validation import DHLabError, describe
     bad = (sp.nan, sp.zoo, sp.oo, -sp.oo)
     if not M.has(*bad):
         return
@@ -206,7 +203,6 @@ def _check_finite_entries(M, who: str) -> None:
 
 def _joint_arguments(M, q_symbols, who: str):
     """``M`` as a sympy object and the joint symbols as the symbols of ``M`` (names accepted)."""
-    from .validation import DHLabError, as_number, describe
     if isinstance(M, (str, bytes)) or isinstance(M, bool) or M is np.ma.masked or isinstance(M, np.ma.MaskedArray):
         raise DHLabError(_("{who}: M must be a sympy Matrix or expression (e.g. robot.fk_sym()), got {got}.").format(
             who=who, got=describe(M)))
@@ -223,7 +219,7 @@ def _joint_arguments(M, q_symbols, who: str):
             who=who, got=describe(M)))
     if isinstance(M, sp.MatrixBase) and not M:
         raise DHLabError(_("{who}: M is an empty matrix: pass a sympy Matrix such as robot.fk_sym().").format(who=who))
-    _check_finite_entries(M, who)
+    check_finite_entries(M, who)
     for k, e in enumerate(entries):      # real: a pose has no imaginary part, and a float overflows no entry
         as_number(e, f"{who}: M[{k}]" if isinstance(M, sp.MatrixBase) else f"{who}: M", symbolic=True)
     q_symbols = list(q_symbols) if isinstance(q_symbols, (list, tuple)) else [q_symbols]

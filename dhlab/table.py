@@ -10,9 +10,10 @@ from __future__ import annotations
 import html
 import math
 
-import sympy as sp
-
+from .errors import DHLabError
 from .i18n import N_, _
+from .lazy_sympy import has_symbols
+from .validation import describe
 
 __all__ = ["DHTable", "format_angle", "format_length"]
 
@@ -24,14 +25,15 @@ def _number(v: float) -> str:
 
 def format_angle(value) -> str:
     """An angle (radians, number or sympy) as degrees: pi/2 -> '90°'."""
-    if isinstance(value, sp.Basic) and value.free_symbols:
+    if has_symbols(value):
+        import sympy as sp      # (loaded already: the value is a sympy formula)
         return str(sp.nsimplify(value * 180 / sp.pi)) + "°"
     return _number(math.degrees(float(value))) + "°"
 
 
 def format_length(value) -> str:
     """A length (number or sympy expression) as text: 2.5 -> '2.5', -l2 -> '-l2'."""
-    if isinstance(value, sp.Basic) and value.free_symbols:
+    if has_symbols(value):
         return str(value)
     return _number(float(value))
 
@@ -54,7 +56,6 @@ class DHTable:
     def __init__(self, robot):
         if not all(hasattr(robot, name) for name in ("links", "joint_labels", "name")) or \
                 not all(hasattr(link, "alpha") for link in getattr(robot, "links", [None])):
-            from .validation import DHLabError, describe   # (validation does not import this module)
             raise DHLabError(_("DHTable shows the table of a DHRobot (e.g. DHTable(dhlab.robots.puma560()), "
                                "or robot.table()); got {got}.").format(got=describe(robot)))
         self.robot = robot

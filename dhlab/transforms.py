@@ -29,9 +29,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import sympy as sp
 
 from .i18n import _
+from .lazy_sympy import is_matrix, is_sympy
 from .validation import (DHLabError, as_angle, as_length, as_matrix4, as_sym_matrix4,
                          as_text, as_tolerance, rigid_problem)
 
@@ -43,7 +43,7 @@ __all__ = [
 
 def _symbolic(*args) -> bool:
     """True when any argument is a sympy value (then the result is a sympy Matrix)."""
-    return any(isinstance(a, sp.Basic) for a in args)
+    return any(is_sympy(a) for a in args)
 
 
 def _angle(value, name: str):
@@ -60,6 +60,7 @@ def _rotation(axis: int, angle, name: str = "angle"):
     """4x4 rotation about the x (0), y (1) or z (2) axis."""
     angle = _angle(angle, name)
     if _symbolic(angle):
+        import sympy as sp      # (loaded already: the angle is a sympy value)
         c, s, M = sp.cos(angle), sp.sin(angle), sp.eye(4)
     else:
         c, s, M = math.cos(angle), math.sin(angle), np.eye(4)
@@ -88,6 +89,7 @@ def trans(x=0, y=0, z=0):
     """Pure translation by (x, y, z)."""
     x, y, z = (_length(v, n) for v, n in ((x, "x"), (y, "y"), (z, "z")))
     if _symbolic(x, y, z):
+        import sympy as sp      # (loaded already: a length is a sympy value)
         M = sp.eye(4)
         M[0, 3], M[1, 3], M[2, 3] = x, y, z
         return M
@@ -138,7 +140,7 @@ def position(T):
 
 def _any_matrix4(T, name: str = "T"):
     """A 4x4 as it came: a sympy Matrix (checked) or a float array."""
-    return as_sym_matrix4(T, name) if isinstance(T, sp.MatrixBase) else as_matrix4(T, name)
+    return as_sym_matrix4(T, name) if is_matrix(T) else as_matrix4(T, name)
 
 
 def is_rigid(T, tol: float = 1e-9) -> bool:
@@ -169,7 +171,8 @@ def inv(T):
     >>> np.allclose(inv(T) @ T, np.eye(4))
     True
     """
-    if isinstance(T, sp.MatrixBase):
+    if is_matrix(T):
+        import sympy as sp      # (loaded already: T is a sympy Matrix)
         T = as_sym_matrix4(T, "T")
         if not T.free_symbols:
             check_rigid(T, "T")            # a numeric sympy matrix must be rigid, as a numpy one

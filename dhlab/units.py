@@ -17,91 +17,24 @@ deg2rad(-30)
 """
 from __future__ import annotations
 
+import functools
 import math
+import warnings
 
 import numpy as np
-import sympy as sp
 
+from .errors import DHLabError
 from .i18n import _
+from .lazy_sympy import is_expr, is_matrix
+from .validation import as_float_array, as_number
+from .validation.marks import Angle, AngleArray, has_angle_mark, is_angle  # noqa: F401  (their old home)
 
-__all__ = ["deg2rad", "rad2deg", "deg", "rad", "Angle", "AngleArray", "is_angle", "has_angle_mark"]
-
-
-def _is_real_scalar(x) -> bool:
-    return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, (bool, np.bool_))
-
-
-class Angle(float):
-    """A float in radians that was made from degrees by :func:`deg2rad`."""
-
-    def __repr__(self) -> str:
-        return f"deg2rad({math.degrees(self):g})"
-
-    # the arithmetic of angles keeps the mark: -θ, 2θ, θ/2, θ ± a number
-    def __neg__(self):
-        return Angle(-float(self))
-
-    def __pos__(self):
-        return self
-
-    def __abs__(self):
-        return Angle(abs(float(self)))
-
-    def _keep(self, value, other):
-        return Angle(value) if _is_real_scalar(other) and isinstance(value, float) else value
-
-    def __add__(self, other):
-        return self._keep(float.__add__(self, other), other)
-
-    __radd__ = __add__
-
-    def __sub__(self, other):
-        return self._keep(float.__sub__(self, other), other)
-
-    def __rsub__(self, other):
-        return self._keep(float.__rsub__(self, other), other)
-
-    def __mul__(self, other):
-        return float.__mul__(self, other) if isinstance(other, Angle) else self._keep(float.__mul__(self, other), other)
-
-    __rmul__ = __mul__
-
-    def __truediv__(self, other):
-        value = float.__truediv__(self, other)
-        return value if isinstance(other, Angle) else self._keep(value, other)
-
-
-class AngleArray(np.ndarray):
-    """An array in radians that was made from degrees by :func:`deg2rad`."""
-
-    def __array_finalize__(self, obj):  # keep the subclass through views and arithmetic
-        pass
-
-
-def is_angle(x) -> bool:
-    """True when ``x`` was made by :func:`deg2rad` (so it is an angle, not a length)."""
-    return isinstance(x, (Angle, AngleArray))
-
-
-def has_angle_mark(x) -> bool:
-    """True when ``x`` or anything inside it (lists, tuples, object arrays) was made by :func:`deg2rad`."""
-    if isinstance(x, (Angle, AngleArray)):
-        return True
-    if isinstance(x, (list, tuple)):
-        return any(has_angle_mark(v) for v in x)
-    if isinstance(x, np.ndarray) and x.dtype == object:
-        return any(has_angle_mark(v) for v in x.ravel())
-    return False
+__all__ = ["deg2rad", "rad2deg", "Angle", "AngleArray", "is_angle", "has_angle_mark"]
 
 
 def _short(x) -> str:
     text = repr(x)
     return text if len(text) <= 60 else text[:57] + "..."
-
-
-def _error(message):
-    from .validation import DHLabError     # (validation imports this module)
-    return DHLabError(message)
 
 
 MOST_TURNS = 100          # no angle of a robot turns more: a larger value is not an angle (a length? a typo?)
@@ -110,15 +43,14 @@ MOST_TURNS = 100          # no angle of a robot turns more: a larger value is no
 def _degrees_in(x, what: str, full_turn: float):
     """``x`` checked to be real numbers (a number or a rectangular array) of at most
     :data:`MOST_TURNS` turns (``full_turn`` is 360 or 2π in the unit of ``x``), as floats."""
-    from .validation import as_float_array, as_number
-    if isinstance(x, (list, tuple, np.ndarray, sp.MatrixBase)):
+    if isinstance(x, (list, tuple, np.ndarray)) or is_matrix(x):
         values = as_float_array(x, what, finite=True)
     else:
         values = np.array(as_number(x, what))
     if values.size and np.abs(values).max() > MOST_TURNS * full_turn:
-        raise _error(_("{what} = {value:g} is too large, more than {turns} full turns: no angle of a robot turns that "
-                       "far. Check the number (is it a length, or a value in the other unit?).").format(
-                           what=what, value=np.abs(values).max(), turns=MOST_TURNS))
+        raise DHLabError(_("{what} = {value:g} is too large, more than {turns} full turns: no angle of a robot turns "
+                           "that far. Check the number (is it a length, or a value in the other unit?).").format(
+                               what=what, value=np.abs(values).max(), turns=MOST_TURNS))
     return values
 
 
@@ -129,11 +61,12 @@ def deg2rad(x):
     >>> deg2rad([0, 90, 180]).round(4).tolist()
     [0.0, 1.5708, 3.1416]
     """
-    if isinstance(x, sp.Expr) and x.free_symbols:
+    if is_expr(x) and x.free_symbols:      # a formula: sympy is loaded already, the result is exact
+        import sympy as sp
         return x * sp.pi / 180
     if has_angle_mark(x):
-        raise _error(_("deg2rad(x): x = {x} is already in radians (it was made by deg2rad()): do not convert twice, "
-                       "use the value as it is.").format(x=_short(x)))
+        raise DHLabError(_("deg2rad(x): x = {x} is already in radians (it was made by deg2rad()): do not convert "
+                           "twice, use the value as it is.").format(x=_short(x)))
     values = _degrees_in(x, _("deg2rad(x): x (degrees)"), 360.0)
     if values.ndim == 0:
         return Angle(math.radians(float(values)))
@@ -147,7 +80,8 @@ def rad2deg(x):
     >>> rad2deg(np.pi)
     180.0
     """
-    if isinstance(x, sp.Expr) and x.free_symbols:
+    if is_expr(x) and x.free_symbols:      # a formula: sympy is loaded already, the result is exact
+        import sympy as sp
         return x * 180 / sp.pi
     values = _degrees_in(x, _("rad2deg(x): x (radians)"), 2 * math.pi)
     degrees = math.degrees(float(values)) if values.ndim == 0 else np.degrees(np.asarray(values, dtype=float))
@@ -156,9 +90,6 @@ def rad2deg(x):
 
 def _renamed(old: str, new):
     """``old`` kept working for one release, with a message that names the new function."""
-    import functools
-    import warnings
-
     @functools.wraps(new)
     def old_name(x):
         warnings.warn(_("dhlab.{old}() is renamed dhlab.{new}() (the name says the direction); {old}() will be "

@@ -16,8 +16,8 @@ Every piece is pinned and checked, and nothing in the finished site points outsi
   hash-pinned); dhlab's own wheel is built from this checkout.
 * The JupyterLab extensions installed in the build venv are built in: ipywidgets', ipympl's, anywidget's and
   jupyterlab-slideshow's (the lecture decks, offline), and the Spanish language pack
-  (lite/requirements.txt); the site also carries notebooks/es/ (the Spanish edition) and
-  notebooks/lecture_plans/ in folders of the same names.
+  (lite/requirements.txt); the site also carries notebooks/es/ (the Spanish edition) in es/, the
+  lecture plans of docs/lecturers/ in lecture_plans/, and the docs site (make docs) in docs/.
 
 The site's ``pyodide-lock.json`` lists only what it ships, with ``imports`` and ``depends`` for
 the added wheels, so that a cell's ``import dhlab`` loads numpy, sympy, matplotlib, ipywidgets and
@@ -188,32 +188,12 @@ def pypi_wheels() -> list[Path]:
 
 
 def dhlab_wheel() -> Path:
-    """dhlab's wheel, built from this checkout."""
+    """dhlab's wheel, built from this checkout (as every wheel of dhlab, without the assignment's
+    solutions: they stay in the repository, tools/teacher/, so a public site cannot serve them)."""
     folder = CACHE / "dist"
     shutil.rmtree(folder, ignore_errors=True)
     run(sys.executable, "-m", "pip", "wheel", "--quiet", "--no-deps", "-w", folder, ROOT)
-    return without_answers(next(folder.glob("dhlab-*.whl")))
-
-
-# The assignment's solutions notebook is package data for the teacher's grader; a public web site
-# must not serve it (anyone could unzip the wheel), and nothing in the browser reads it.
-ANSWERS = "dhlab/grading/data/"
-
-
-def without_answers(wheel: Path) -> Path:
-    """The wheel rewritten without the solutions notebook (its RECORD lines dropped too)."""
-    with zipfile.ZipFile(wheel) as archive:
-        members = [(i, archive.read(i)) for i in archive.infolist() if not i.filename.startswith(ANSWERS)]
-    rewritten = []
-    for info, data in members:
-        if info.filename.endswith(".dist-info/RECORD"):
-            lines = data.decode().splitlines(keepends=True)
-            data = "".join(line for line in lines if not line.startswith(ANSWERS)).encode()
-        rewritten.append((info, data))
-    with zipfile.ZipFile(wheel, "w", zipfile.ZIP_DEFLATED) as archive:
-        for info, data in rewritten:
-            archive.writestr(info, data)
-    return wheel
+    return next(folder.glob("dhlab-*.whl"))
 
 
 def kernel_wheels() -> list[Path]:
@@ -347,13 +327,58 @@ def stage_site():
     (STAGE / "files").mkdir()
     for notebook in notebooks:
         shutil.copy2(notebook, STAGE / "files" / notebook.name)
-    # the Spanish edition (notebooks/es/, made by dhlab.course.edition) and the lecture plans
-    # (notebook 1 links them), each in its folder as in notebooks/
-    for folder, pattern in [("es", "*.ipynb"), ("lecture_plans", "*.md")]:
-        for path in sorted((ROOT / "notebooks" / folder).glob(pattern)):
-            (STAGE / "files" / folder).mkdir(exist_ok=True)
-            shutil.copy2(path, STAGE / "files" / folder / path.name)
+    # the Spanish edition (notebooks/es/, made by the edition tool), in its folder as in notebooks/
+    for path in sorted((ROOT / "notebooks" / "es").glob("*.ipynb")):
+        (STAGE / "files" / "es").mkdir(exist_ok=True)
+        shutil.copy2(path, STAGE / "files" / "es" / path.name)
+    stage_lecture_plans(STAGE / "files")
     assemble_pyodide(STAGE / "static" / "pyodide")
+
+
+# The lecture plans live in docs/lecturers/ and link the notebooks as ../../notebooks/<name>, and
+# notebook 1 links them as ../docs/lecturers/<page> (../../ from notebooks/es/). The site keeps the
+# notebooks at the top of its files, the Spanish ones in es/ and the plans in lecture_plans/, so
+# those links are rewritten for that layout (the site has no folder above its files).
+PLAN_LINKS = [("](../../notebooks/", "](../")]
+NOTEBOOK_LINKS = {"": [("](../docs/lecturers/", "](lecture_plans/")],
+                  "es": [("](../../docs/lecturers/", "](../lecture_plans/")]}
+
+
+def copy_with_links(source: Path, target: Path, rewrites: list[tuple[str, str]]):
+    """``source`` copied to ``target`` with each (old, new) link prefix replaced."""
+    text = source.read_text(encoding="utf-8")
+    for old, new in rewrites:
+        text = text.replace(old, new)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    target.write_text(text, encoding="utf-8")
+    shutil.copystat(source, target)
+
+
+def stage_lecture_plans(files: Path):
+    """The lecture plans in ``files``/lecture_plans/ (with the picture they show, in images/), and the
+    staged notebooks' links to them pointed there."""
+    for plan in sorted((ROOT / "docs" / "lecturers").glob("*.md")):
+        copy_with_links(plan, files / "lecture_plans" / plan.name, PLAN_LINKS)
+    for image in sorted((ROOT / "notebooks" / "images").glob("*.png")):
+        (files / "images").mkdir(exist_ok=True)
+        shutil.copy2(image, files / "images" / image.name)
+    for folder, rewrites in NOTEBOOK_LINKS.items():
+        for notebook in sorted((files / folder).glob("*.ipynb")):
+            copy_with_links(notebook, notebook, rewrites)
+
+
+DOCS_HTML = ROOT / "docs" / "_build" / "html"      # what `make docs` builds
+
+
+def add_docs(site: Path = OUTPUT, built: Path = DOCS_HTML) -> bool:
+    """The docs site, when `make docs` has built it, in ``site``/docs/ (served beside the course)."""
+    if not (built / "index.html").exists():
+        print(f"{shown(built)} is not built: the site goes without its docs (make docs, then make lite)")
+        return False
+    shutil.rmtree(site / "docs", ignore_errors=True)
+    shutil.copytree(built, site / "docs", ignore=shutil.ignore_patterns(".buildinfo", ".doctrees"))
+    print(f"the docs are in {shown(site / 'docs')}")
+    return True
 
 
 def configure_site():
@@ -389,6 +414,8 @@ def open_on_start_here():
 
 
 def main():
+    if sys.argv[1:] == ["--docs-only"]:        # the built docs into an existing site, nothing else
+        sys.exit(0 if add_docs() else 1)
     lite_app = Path(sys.prefix) / "bin" / "jupyter-lite"
     if not lite_app.exists():
         raise BuildError(f"{lite_app} not found: run this with the build venv's python "
@@ -399,6 +426,7 @@ def main():
     run(lite_app, "build", "--lite-dir", STAGE, "--output-dir", OUTPUT, cwd=STAGE)
     configure_site()
     open_on_start_here()
+    add_docs()
     (OUTPUT / ".nojekyll").touch()         # GitHub Pages: serve the folder as it is
     size = sum(p.stat().st_size for p in OUTPUT.rglob("*") if p.is_file())
     print(f"built {shown(OUTPUT)}: {size / 1e6:.0f} MB; serve it with `make lite-serve`")

@@ -64,7 +64,7 @@ import asyncio, json, pyodide.http, pyodide.webloop, micropip    # (pyodide_kern
 import matplotlib.pyplot as plt, numpy as np, sympy as sp
 import dhlab
 from dhlab.views.teach import teach
-from dhlab.course.exercises_dh import exercise
+from dhlab.course.exercises import exercise
 import dhlab.data
 panel = teach(dhlab.robots.ssrms())
 panel.sliders[1].value = 30

@@ -11,7 +11,7 @@ import pytest
 import sympy as sp
 
 from dhlab import DHLabError, DHRobot, PrismaticDH, RevoluteDH, deg2rad, robots
-from dhlab.assign import dh_assignment, dh_from_axes, joint_axes
+from dhlab.dh_frames import dh_assignment, dh_from_axes, joint_axes
 from dhlab.transforms import Rx, trans
 
 RNG = np.random.default_rng(20260505)

@@ -11,9 +11,10 @@ import nbformat
 import pytest
 
 from dhlab import deg2rad
-from dhlab.course import assignment as A
-from dhlab.course.family_model import build
-from dhlab.course.family_views import axes_figure, axes_table, points_table
+from dhlab.assignment import notebook as A
+from dhlab.assignment.model import build
+from dhlab.assignment.pictures import axes_figure
+from dhlab.assignment.tables import axes_table, points_table
 from dhlab.i18n import set_language
 from dhlab.validation import DHLabError
 
@@ -163,11 +164,11 @@ def test_the_note_of_part_3_in_english():
 @pytest.mark.parametrize("key", ["cobra600", "ur5"])
 def test_the_your_robot_section_in_spanish(key, spanish):
     """The "Your robot" section a released notebook opens with, in the notebook's language."""
-    from dhlab.course.family_notebook import _intro
-    from dhlab.grading import variants as V
+    from dhlab.assignment import variants as V
+    from dhlab.assignment.notebook_cells import robot_intro
     variant = V.variant(key, 5)
     robot = V.robot_of_variant(variant)
-    text = _intro(robot, {"variant": variant.to_dict(), "student_id": "ana"})
+    text = robot_intro(robot, {"variant": variant.to_dict(), "student_id": "ana"})
     assert text.startswith("## Su robot\n\nEste cuaderno es para **ana**. Su robot es un **")
     assert f"Tiene {robot.n} articulaciones" in text and "posición inicial" in text
     assert ("todas rotacionales" in text) == ("P" not in robot.kinds)

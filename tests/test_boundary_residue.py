@@ -4,7 +4,7 @@ import pytest
 
 import dhlab
 from dhlab.chain import Link, Robot, Rot
-from dhlab.course import assignment as A
+from dhlab.assignment import notebook as A
 from dhlab.validation import DHLabError
 
 q1, q2, q3 = A.joint_variables(3)

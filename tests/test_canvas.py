@@ -55,7 +55,7 @@ def test_a_slider_step_sends_the_moving_artists_not_a_picture():
     numbers = np.frombuffer(bytes(buffers[0]), np.float32)
     at, n = content["items"][kinds.index("line")]["points"]
     assert at + 3 * n <= len(numbers)
-    assert content["seq"] == panel.view.live._seq
+    assert content["seq"] == panel.view.live.seq
     assert widget.frame == frame_before          # no PNG was made for the step
 
 
@@ -75,17 +75,17 @@ def test_the_rest_frame_is_exactly_what_savefig_draws():
         panel, widget, browser = canvas_panel(robot)
         panel.sliders[0].value = panel.sliders[0].value + 0.6 * (panel.sliders[0].max - panel.sliders[0].value)
         live = panel.view.live
-        widget._on_browser_message(widget, {"kind": "rest", "seq": live._seq}, [])
-        assert widget.frame_seq == live._seq
+        widget.receive({"kind": "rest", "seq": live.seq})
+        assert widget.frame_seq == live.seq
         np.testing.assert_array_equal(pixels(widget.frame), savefig_pixels(live.figure))
 
 
 def test_a_stale_rest_request_is_not_answered():
     panel, widget, browser = canvas_panel()
     panel.sliders[1].value += 5
-    old = panel.view.live._seq
+    old = panel.view.live.seq
     panel.sliders[1].value += 5
-    widget._on_browser_message(widget, {"kind": "rest", "seq": old}, [])
+    widget.receive({"kind": "rest", "seq": old})
     assert widget.frame_seq < old                 # a newer pose is on its way: no frame for the old one
 
 
@@ -111,14 +111,14 @@ def test_an_artist_it_cannot_send_gives_a_full_matplotlib_frame():
     dot.center = (0.5, 0.5)
     live.refresh()
     assert browser.scenes() == []
-    assert widget.frame_seq == live._seq
+    assert widget.frame_seq == live.seq
     np.testing.assert_array_equal(pixels(widget.frame), savefig_pixels(live.figure))
 
 
 def test_turning_the_view_in_the_browser_ends_on_that_view():
     panel, widget, browser = canvas_panel()
     background = widget.background
-    widget._on_browser_message(widget, {"kind": "view", "axes": 0, "elev": 12.5, "azim": 77.25}, [])
+    widget.receive({"kind": "view", "axes": 0, "elev": 12.5, "azim": 77.25})
     ax = panel.view.ax
     assert (ax.elev, ax.azim) == (12.5, 77.25)
     assert widget.background != background                 # matplotlib drew the new view
@@ -134,7 +134,7 @@ def test_turning_the_view_in_the_browser_ends_on_that_view():
 def test_odd_messages_from_the_browser_change_nothing(message):
     panel, widget, browser = canvas_panel()
     view = (panel.view.ax.elev, panel.view.ax.azim)
-    widget._on_browser_message(widget, message, [])
+    widget.receive(message)
     assert (panel.view.ax.elev, panel.view.ax.azim) == view
     assert browser.messages == []
 
@@ -147,10 +147,10 @@ def test_a_hidpi_screen_gets_a_sharper_picture_of_the_same_size():
     widget.pixel_ratio = 2.0
     assert list(widget.css_size) == css
     assert pixels(widget.background).shape[1] == 2 * width
-    assert live.figure.dpi == 2 * live._base_dpi
+    assert live.figure.dpi == 2 * live.base_dpi
     widget.pixel_ratio = float("nan")                   # ignored
     widget.pixel_ratio = 40.0                           # clamped
-    assert live.figure.dpi == 3 * live._base_dpi
+    assert live.figure.dpi == 3 * live.base_dpi
 
 
 def test_backend_names_and_the_environment_override(monkeypatch):
@@ -197,7 +197,7 @@ def _place_boxes_every_spot(anchors, sizes, bounds, obstacles):
     anchors, sizes = np.asarray(anchors, float), np.asarray(sizes, float)
     angles = 2 * np.pi * np.arange(labels._DIRECTIONS) / labels._DIRECTIONS
     unit = np.column_stack([np.cos(angles), np.sin(angles)])
-    radii = np.asarray(labels._RADII)
+    radii = np.asarray(labels.RADII)
     placed, corners = np.zeros((0, 4)), np.zeros_like(anchors)
     gaps = anchors[:, None, :] - anchors[None, :, :]
     crowd = np.sum(1 / (1 + np.linalg.norm(gaps, axis=2)), axis=1)
@@ -207,11 +207,11 @@ def _place_boxes_every_spot(anchors, sizes, bounds, obstacles):
         if np.linalg.norm(away) < 1e-9:
             away = np.array([0.6, 0.8])
         u = unit[np.argsort(-(unit @ away), kind="stable")]
-        reach = labels._GAP + radii[:, None] + 0.5 * (np.abs(u[:, 0]) * w + np.abs(u[:, 1]) * h)[None, :]
+        reach = labels.GAP + radii[:, None] + 0.5 * (np.abs(u[:, 0]) * w + np.abs(u[:, 1]) * h)[None, :]
         centres = a + u[None, :, :] * reach[:, :, None]
         boxes = np.concatenate([centres - [w / 2, h / 2], centres + [w / 2, h / 2]], axis=-1).reshape(-1, 4)
-        cost = (labels._overlap_cost(boxes, placed) + labels._outside_cost(boxes, bounds)
-                + labels._cover_cost(boxes, obstacles, a) + 1e-3 * np.repeat(np.arange(len(radii)), len(u)))
+        cost = (labels.overlap_cost(boxes, placed) + labels.outside_cost(boxes, bounds)
+                + labels.cover_cost(boxes, obstacles, a) + 1e-3 * np.repeat(np.arange(len(radii)), len(u)))
         best = int(np.argmin(cost))
         corners[k] = boxes[best, :2]
         placed = np.vstack([placed, boxes[best]])
@@ -303,14 +303,14 @@ def _in_a_kernel_loop(monkeypatch, front_end: bool, say_loaded: bool):
 
     from dhlab.views import canvas
 
-    monkeypatch.setattr(canvas, "_WATCH_S", 0.01)
-    monkeypatch.setattr(canvas, "FRONT_END_S", 0.04)
+    monkeypatch.setattr(livefigure, "_WATCH_S", 0.01)
+    monkeypatch.setattr(livefigure, "FRONT_END_S", 0.04)
     monkeypatch.setattr(livefigure, "_current_cell", lambda: ("cell-1", 1) if front_end else None)
 
     async def scenario():
         panel, widget, _browser = canvas_panel()
         if say_loaded:
-            widget._on_browser_message(widget, {"kind": "loaded"}, [])
+            widget.receive({"kind": "loaded"})
         await asyncio.sleep(0.3)
         return panel, widget
 
@@ -326,7 +326,7 @@ def test_a_page_that_cannot_run_the_module_gets_png_frames_in_the_same_place(mon
     assert live.backend == "image" and isinstance(figure, ipywidgets.Image)
     assert canvas_widget not in panel.children and "dhlab-figure" in figure._dom_classes
     assert not any(type(w).__name__ == "SliderKeys" for w in panel.children[1].children)
-    assert panel._keys is None                       # the keys widget (its front end is missing) closed
+    assert panel.keys_widget is None                       # the keys widget (its front end is missing) closed
     assert np.array_equal(pixels(figure.value), savefig_pixels(panel.figure))
     panel.sliders[1].value += 30                     # the PNG follows the sliders
     assert np.array_equal(pixels(figure.value), savefig_pixels(panel.figure))

@@ -22,8 +22,8 @@ from mpl_toolkits.mplot3d.art3d import Text3D  # noqa: E402
 from dhlab import robots  # noqa: E402
 from dhlab.assign import joint_axes  # noqa: E402
 from dhlab.course.exercises import seed001_DefinirTHz  # noqa: E402
-from dhlab.course.exercises_dh import four_axis_arm, row_exercise_frames  # noqa: E402
-from dhlab.course import figures_dh, figures_homogeneous, figures_ssrms  # noqa: E402
+from dhlab.course.exercises import four_axis_arm, row_exercise_frames  # noqa: E402
+from dhlab.course.lessons import figures_dh, figures_homogeneous, figures_ssrms  # noqa: E402
 from dhlab.transforms import Rx, trans  # noqa: E402
 from dhlab.views.framing import projected  # noqa: E402
 

@@ -18,7 +18,7 @@ import deck_rules
 
 ROOT = Path(__file__).resolve().parent.parent
 NOTEBOOKS = ROOT / "notebooks"
-PLANS = NOTEBOOKS / "lecture_plans"
+PLANS = ROOT / "docs" / "lecturers"        # the lecturers' pages of the docs site
 WIDGET = "application/vnd.jupyter.widget-view+json"
 MIN_SCREENS, MAX_SCREENS = 12, 36        # a 90-minute lecture: about 15-25 screens, at least 2.5 min each
 PANEL_SCREEN_WORDS = 25                  # a panel's screen: at most a line or two of prose
@@ -110,9 +110,9 @@ def test_each_lecture_has_a_plan(lecture):
 
 
 def test_the_index_lists_every_plan():
-    index = (PLANS / "README.md").read_text(encoding="utf-8")
+    index = (PLANS / "index.md").read_text(encoding="utf-8")
     for stem in deck_rules.LECTURE_NOTEBOOKS:
-        assert f"({stem}.md)" in index, f"lecture_plans/README.md does not link {stem}.md"
+        assert f"({stem}.md)" in index, f"docs/lecturers/index.md does not link {stem}.md"
     for link in re.findall(r"\]\(([^)#]+)\)", index):
         if not link.startswith("http"):
-            assert (PLANS / link).resolve().exists(), f"lecture_plans/README.md links {link}, which does not exist"
+            assert (PLANS / link).resolve().exists(), f"docs/lecturers/index.md links {link}, which does not exist"

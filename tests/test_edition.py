@@ -13,10 +13,10 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from dhlab.course import edition as ed
-from dhlab.course.edition import EDITION_NOTEBOOKS, NOTEBOOKS, Edition, EditionError
-from dhlab.course.edition_catalog import markdown_cells, read_catalog, write_catalog
-from dhlab.course.edition_text import anchor, headings, placeholder_difference, placeholders, relink
+from tools import edition as ed
+from tools.edition import EDITION_NOTEBOOKS, NOTEBOOKS, Edition, EditionError
+from tools.edition_catalog import markdown_cells, read_catalog, write_catalog
+from tools.edition_text import anchor, headings, placeholder_difference, placeholders, relink
 
 ROOT = Path(__file__).resolve().parent.parent
 REPO = Edition()
@@ -100,7 +100,8 @@ def edition(tmp_path):
     (not executed: the checks compare sources and metadata)."""
     if REPO.problems(SAMPLE):
         pytest.skip(f"{SAMPLE}'s catalog is not complete")
-    copy_ = Edition(english_dir=tmp_path / "en", spanish_dir=tmp_path / "en" / "es", catalog_dir=tmp_path / "po")
+    copy_ = Edition(english_dir=tmp_path / "en", spanish_dir=tmp_path / "en" / "es", catalog_dir=tmp_path / "po",
+                    shipped_dir=tmp_path / "shipped")
     for source, target in ((REPO.english_path(SAMPLE), copy_.english_path(SAMPLE)),
                            (REPO.catalog_path(SAMPLE), copy_.catalog_path(SAMPLE))):
         target.parent.mkdir(parents=True, exist_ok=True)
@@ -111,7 +112,7 @@ def edition(tmp_path):
 
 def fresh(edition):
     """The same folders, nothing cached (after a file changed)."""
-    return Edition(edition.english_dir, edition.spanish_dir, edition.catalog_dir)
+    return Edition(edition.english_dir, edition.spanish_dir, edition.catalog_dir, edition.shipped_dir)
 
 
 def edit_english(edition, cell_id, change):
@@ -300,7 +301,8 @@ def test_the_stored_spanish_notebook_is_executed():
 def test_build_relinks_images_links_and_anchors(tmp_path):
     """From notebooks/es/: images one folder up; a notebook with a Spanish edition stays in
     Spanish (its anchor translated); one without goes to the English notebook; URLs unchanged."""
-    edition = Edition(english_dir=tmp_path, spanish_dir=tmp_path / "es", catalog_dir=tmp_path / "po")
+    edition = Edition(english_dir=tmp_path, spanish_dir=tmp_path / "es", catalog_dir=tmp_path / "po",
+                      shipped_dir=tmp_path / "shipped")
     setup = nbformat.v4.new_code_cell('import dhlab\ndhlab.set_language("en")')
     a = nbformat.v4.new_notebook(cells=[
         nbformat.v4.new_markdown_cell("## Start\n![a robot](images/r.png) <img src=\"images/s.png\"> "
@@ -360,7 +362,8 @@ def test_headings_and_anchors():
 @pytest.mark.parametrize("stem", NOTEBOOKS)
 def test_every_english_notebook_round_trips_through_a_catalog(stem, tmp_path):
     """extract writes each markdown cell's source exactly: read back, every cell is found by (id, text)."""
-    edition = Edition(english_dir=REPO.english_dir, spanish_dir=tmp_path / "es", catalog_dir=tmp_path)
+    edition = Edition(english_dir=REPO.english_dir, spanish_dir=tmp_path / "es", catalog_dir=tmp_path,
+                      shipped_dir=tmp_path / "shipped")
     edition.extract(stem)
     catalog = read_catalog(edition.catalog_path(stem))
     cells = markdown_cells(edition.english(stem))
@@ -430,3 +433,39 @@ def test_a_spanish_release_uses_the_editions_text(tmp_path):
     texts = ["".join(c["source"]) for c in same]
     assert any(t.startswith("## Parte 2") for t in texts) and any(t.startswith("## Parte 3") for t in texts), \
         "the cells the variant does not change are the edition's"
+
+
+def test_the_package_reads_the_assignment_s_translations_where_build_writes_them():
+    """dhlab-assign --language es reads notebook 8's Spanish text from the package (no catalog, no Babel
+    there): the file build writes from the catalog, which check compares."""
+    from dhlab.grading.release_language import SPANISH_TEXTS, spanish_texts
+    assert ed.SHIPPED == [ASSIGNMENT] and REPO.shipped_path(ASSIGNMENT) == SPANISH_TEXTS
+    template = REPO.english(ASSIGNMENT)
+    found = spanish_texts(template)
+    spanish = {c.id: c.source for c in REPO.spanish(ASSIGNMENT).cells if c.cell_type == "markdown"}
+    assert found and all(spanish[cell_id].startswith(text[:20]) or "](" in text for cell_id, text in found.items())
+    changed = nbformat.from_dict(copy.deepcopy(template))
+    first = next(c for c in changed.cells if c.id in found)
+    first.source += " (changed)"                         # a teacher's own text: not translated
+    assert first.id not in spanish_texts(changed)
+
+
+def test_a_stale_shipped_translation_fails_the_check(tmp_path):
+    edition = Edition(english_dir=REPO.english_dir, spanish_dir=REPO.spanish_dir, catalog_dir=REPO.catalog_dir,
+                      shipped_dir=tmp_path)
+    assert any("tools.edition build" in p for p in edition.check(ASSIGNMENT))        # missing
+    edition.shipped_path(ASSIGNMENT).write_text(REPO.shipped_path(ASSIGNMENT).read_text(encoding="utf-8"),
+                                                encoding="utf-8")
+    assert edition.check(ASSIGNMENT) == []
+    edition.shipped_path(ASSIGNMENT).write_text("{}", encoding="utf-8")
+    assert any("not what the catalog makes" in p for p in edition.check(ASSIGNMENT))
+
+
+def test_opening_the_home_leaves_it_as_it_is():
+    """JupyterLab writes the kernel's language_info into a notebook it opens and autosaves it when it
+    differs: the home carries it in full, as the executed notebooks do (with only its name, merely
+    opening the home modified the tracked notebooks/index.ipynb)."""
+    stored = nbformat.read(REPO.home_path(), as_version=4)
+    executed = REPO.english(NOTEBOOKS[0]).metadata.language_info
+    assert stored.metadata.language_info == executed and "version" in executed
+    assert REPO.home_problems() == []

@@ -1,5 +1,5 @@
 """The Spanish edition speaks to the student as *usted*, the seeds' register ("observe", "recuerde",
-"considere"): no catalog of dhlab/locale/es/notebooks/ may use an unambiguous *tú* form.
+"considere"): no catalog of tools/locale/es/notebooks/ may use an unambiguous *tú* form.
 
 Unambiguous means a form that only *tú* has: the pronouns and possessives (tú, tu, tus, ti, te,
 contigo), second-person verbs (puedes, tienes, debes, podrás …), imperatives with a pronoun attached
@@ -12,9 +12,9 @@ from pathlib import Path
 
 import pytest
 
-from dhlab.course.edition_catalog import read_catalog
+from tools.edition_catalog import read_catalog
 
-CATALOGS = sorted((Path(__file__).resolve().parent.parent / "dhlab/locale/es/notebooks").glob("*.po"))
+CATALOGS = sorted((Path(__file__).resolve().parent.parent / "tools/locale/es/notebooks").glob("*.po"))
 
 # Forms only tú has, anywhere in a sentence.
 TU_WORDS = (

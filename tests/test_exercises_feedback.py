@@ -195,7 +195,8 @@ def test_the_generic_checks_never_raise(answer):
 
 
 # --- the worked examples in the docstrings of the checks' modules ----------------------------------------------------
-@pytest.mark.parametrize("name", ["feedback", "answers", "matrix_checks", "value_checks", "word_checks", "exercises"])
+@pytest.mark.parametrize("name", ["checks.feedback", "checks.reading", "checks.matrix", "checks.values", "checks.words",
+                                  "exercises"])
 def test_docstring_examples_of_the_checks(name):
     module = importlib.import_module(f"dhlab.course.{name}")
     result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE | doctest.ELLIPSIS)

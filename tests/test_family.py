@@ -11,11 +11,12 @@ import numpy as np
 import pytest
 
 from dhlab import DHLabError
-from dhlab.assign import dh_from_axes
-from dhlab.course import family as fam
-from dhlab.course.family_model import build, dh_frames, physical_frames, random_valid_frames, rows_from_frames
+from dhlab.assignment import family as fam
+from dhlab.assignment import reference as puma
+from dhlab.assignment.model import build, physical_frames, random_valid_frames, rows_from_frames
+from dhlab.assignment.reference import dh_frames
 from dhlab.dh import DHRobot
-from dhlab.grading import puma
+from dhlab.dh_frames import dh_from_axes
 
 KEYS = fam.family_names()
 

@@ -1,9 +1,9 @@
-"""Notebook 06's row-by-row figure (dhlab.course.figures_dh_examples) and the lettered triad."""
+"""Notebook 06's row-by-row figure (dhlab.course.lessons.figures_dh_examples) and the lettered triad."""
 import numpy as np
 import pytest
 
 import dhlab
-from dhlab.course.figures_dh_examples import clip_segment, frame_pairs_figure, row_title
+from dhlab.course.lessons.figures_dh_examples import clip_segment, frame_pairs_figure, row_title
 from dhlab.validation import DHLabError
 from dhlab.views import framing
 from dhlab.views.layout import drawn_texts

@@ -21,9 +21,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from dhlab.assignment import variants as V
 from dhlab.grading import grade_variants as GV
 from dhlab.grading import release as R
-from dhlab.grading import variants as V
 from dhlab.grading.staging import stage
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -36,7 +36,7 @@ CASES = {"intersect": "intersect", "parallel": "parallel", "coincident": "parall
 def answer_cells(robot, frames=None) -> dict:
     """The three answer cells (grade_id -> source) of a student who placed DH frames ``frames``
     (default: the reference solution's) on ``robot``."""
-    from dhlab.course.family_model import rows_from_frames
+    from dhlab.assignment.model import rows_from_frames
     from dhlab.lines import relation
     frames = robot.home_frames if frames is None else frames
     n = robot.n
@@ -98,7 +98,7 @@ def handed_in(released):
     """ana honest (another valid DH assignment than the reference's), bruno hands in carla's
     solved notebook, carla puts the published PUMA in her metadata and robot cell and solves
     that, dora strips the record and solves her own robot."""
-    from dhlab.course.family_model import random_valid_frames
+    from dhlab.assignment.model import random_valid_frames
     tmp, _, nbs = released
     folder = tmp / "submissions"
     ana = released_robot(nbs["ana"])

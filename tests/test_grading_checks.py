@@ -16,21 +16,27 @@ import pytest
 
 import dhlab
 from dhlab import assignment as A
-from dhlab.grading import answers as ans
-from dhlab.grading import checks, generate, gradebook, puma
+from dhlab.assignment import answers as ans
+from dhlab.assignment import checks, encode
+from dhlab.assignment import reference as R
+from dhlab.assignment import valid_frames as VF
+from dhlab.grading import generate, gradebook
 from dhlab.validation import DHLabError
 
 ROOT = Path(__file__).resolve().parents[1]
-SOURCE = ROOT / "dhlab" / "grading" / "data" / "08_puma_assignment.ipynb"
+SOURCE = ROOT / generate.CHECKOUT_SOURCE                # the teacher's notebook, with the solutions
 STUDENT = ROOT / "notebooks" / "08_puma_assignment.ipynb"
 q1, q2, q3, q4, q5, q6 = A.joint_variables(6)
 QS = (q1, q2, q3, q4, q5, q6)
 
 
-@pytest.mark.parametrize("name", ["puma", "answers", "checks", "part2", "part3", "gradebook", "generate", "runner",
-                                  "notebook_code", "sandbox", "isolation", "staging", "cli"])
+@pytest.mark.parametrize("name", ["assignment.reference", "assignment.valid_frames", "assignment.encode",
+                                  "assignment.answers", "assignment.checks", "assignment.checks.analysis",
+                                  "assignment.checks.links", "assignment.checks.transforms",
+                                  "grading.gradebook", "grading.generate", "grading.runner", "grading.notebook_code",
+                                  "grading.sandbox", "grading.isolation", "grading.staging", "grading.cli"])
 def test_docstring_examples_of_the_grading_modules(name):
-    module = importlib.import_module(f"dhlab.grading.{name}")
+    module = importlib.import_module(f"dhlab.{name}")
     result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE)
     assert result.failed == 0
 
@@ -52,8 +58,8 @@ def _solution_namespace():
 def _namespace_from_frames(frames):
     """A valid answer built from any valid set of DH frames (home pose)."""
     ns = _solution_namespace()
-    ref = puma.reference()
-    rows = puma.dh_rows_from_frames(frames)
+    ref = R.reference()
+    rows = VF.dh_rows_from_frames(frames)
     for i, (sign, theta, d, a, alpha) in enumerate(rows, start=1):
         ns[f"T{i}"] = A.Tz(sign * QS[i - 1] + theta, d) @ A.Tx(alpha, a)
     ns["chain"] = _chain(ns)
@@ -90,7 +96,7 @@ def test_random_valid_dh_assignments_score_full_marks():
     """Signs of every z and x, origins slid along parallel axes, x6 turned: all valid."""
     rng = np.random.default_rng(2024)
     for _ in range(60):
-        report = _report(_namespace_from_frames(puma.random_valid_frames(rng)))
+        report = _report(_namespace_from_frames(VF.random_valid_frames(rng)))
         assert report.score == report.max_score, report.text()
 
 
@@ -104,7 +110,7 @@ def test_the_hand_written_alternative_scores_full_marks():
     ns["T6"] = A.Tz(q6 + 90, 0) @ A.Tx(0, 0)
     ns["chain"] = _chain(ns)
     frames = ns["chain"].frames(np.zeros(6))
-    ref = puma.reference()
+    ref = R.reference()
     ns["link_points"] = [np.round((ref.world_points(k) - F[:3, 3]) @ F[:3, :3], 4).tolist()
                          for k, F in enumerate(frames)]          # typed with 4 decimals
     assert _report(ns).score == 10
@@ -112,12 +118,29 @@ def test_the_hand_written_alternative_scores_full_marks():
 
 def test_a_valid_chain_matches_the_puma_at_random_configurations():
     rng = np.random.default_rng(7)
-    rows = ans.answers_from_namespace(_namespace_from_frames(puma.random_valid_frames(rng)))
-    match = checks.chain_matches(checks._rows(rows))
+    rows = ans.answers_from_namespace(_namespace_from_frames(VF.random_valid_frames(rng)))
+    match = checks.chain_matches(checks.rows_of(rows))
     assert all(match["axes"]) and match["end_effector"] and match["configurations"] == 51
 
 
 # --- one mistake costs its own item and names the quantity -------------------------------------
+
+def test_the_reference_moves_by_the_one_forward_kinematics_path():
+    """The reference's frames, and any chain of rows the checks build (a sliding joint too, a joint
+    turned against its z), are the numbers of dhlab.DHRobot, which tests/test_against_rtb.py compares
+    with the Robotics Toolbox."""
+    ref = R.reference()
+    rng = np.random.default_rng(3)
+    lo, hi = ref.robot.qlim.T
+    Q = lo + (hi - lo) * rng.random((50, 6))
+    np.testing.assert_allclose(ref.frames(Q), ref.robot.frames(Q), atol=1e-12)
+    robot = dhlab.DHRobot([dhlab.RevoluteDH(d=0.2, a=0.1, alpha=0.5, offset=0.3),
+                           dhlab.PrismaticDH(theta=0.7, a=0.3, alpha=-1.2, offset=0.05, qlim=[-1, 1])])
+    Q = rng.uniform(-1, 1, (20, 2))
+    rows = [(1, 0, 0.3, 0.2, 0.1, 0.5), (-1, 1, 0.7, 0.05, 0.3, -1.2)]
+    np.testing.assert_allclose(R.dh_frames(rows, "RP", Q), robot.frames(Q * [1, -1]), atol=1e-12)
+    np.testing.assert_allclose(R.dh_matrix(0.3, 0.2, 0.1, 0.5), robot.A(1, 0.0), atol=1e-12)
+
 
 def test_the_issues_example_feedback():
     ns = _solution_namespace()
@@ -143,7 +166,7 @@ def test_a_wrong_twist_costs_only_its_own_transformation(i):
     assert [w.label.split(" ")[0] for w in wrong] == [f"T{i}"]
     assert f"α{i}" in wrong[0].message
     assert _scores(report)[:2] == [2, 3]
-    match = checks.chain_matches(checks._rows(ans.answers_from_namespace(ns)))
+    match = checks.chain_matches(checks.rows_of(ans.answers_from_namespace(ns)))
     if i < 6:        # α6 only turns frame 6 about x6: no joint axis, and not the end effector's position
         assert not (all(match["axes"]) and match["end_effector"])     # the chain really is wrong
 
@@ -204,7 +227,7 @@ def test_part1_mistakes_and_the_ways_students_write_answers():
 
 def test_part2_mistakes_cost_only_those_links():
     ns = _solution_namespace()
-    ref = puma.reference()
+    ref = R.reference()
     lp = ns["link_points"]
     F2 = ref.home_frames[2]
     lp[3] = ((ref.world_points(3) - F2[:3, 3]) @ F2[:3, :3]).tolist()        # drawn in frame 2
@@ -225,11 +248,11 @@ def test_part2_is_scored_in_the_frames_the_students_own_transformations_build():
     link (assembled with the student's T_k they land elsewhere: seed 000, figures 10–13); a slip
     that part 3 charges is not charged again in part 2; the notebook says the same."""
     rng = np.random.default_rng(3)
-    frames = puma.random_valid_frames(rng)
+    frames = VF.random_valid_frames(rng)
     ns = _namespace_from_frames(frames)
     assert _report(ns).score == 10                                  # links and rows in the same frames
     ns["link_points"] = _solution_namespace()["link_points"]        # valid, but other frames
-    ref = puma.reference()
+    ref = R.reference()
     placed = {k: np.array(P) @ frames[k][:3, :3].T + frames[k][:3, 3] for k, P in ns["link_points"].items()}
     differ = [k for k in range(7) if np.abs(placed[k] - ref.world_points(k)).max() > 1e-6]   # the ground truth
     report = _report(ns)
@@ -271,7 +294,7 @@ def test_nothing_answered_gives_zero_with_not_answered():
 def test_to_plain_caps_sizes_and_survives_odd_values():
     cyclic = []
     cyclic.append(cyclic)
-    plain = ans.to_plain({"big": list(range(10_000)), "cyclic": cyclic, "arr": np.arange(3.0),
+    plain = encode.to_plain({"big": list(range(10_000)), "cyclic": cyclic, "arr": np.arange(3.0),
                           "nan": float("nan"), "dots": ..., 3: "int key"})
     json.dumps(plain)                                          # JSON, whatever came in
     text = json.dumps(plain)
@@ -281,7 +304,7 @@ def test_to_plain_caps_sizes_and_survives_odd_values():
 def test_answers_from_dhlab_objects_read_fields_not_methods(monkeypatch):
     T = A.Tz(q3 - 90, 0.15) @ A.Tx(-90, 0.02)
     monkeypatch.setattr(A.DHTransform, "__repr__", lambda self: "perfect")
-    row = ans.parse_answers(json.loads(json.dumps({"T3": ans.to_plain(T)}))).T[2]
+    row = ans.parse_answers(json.loads(json.dumps({"T3": encode.to_plain(T)}))).T[2]
     assert (row.theta.joint, row.theta.sign, row.theta.const, row.d.const, row.alpha, row.a) == (3, 1, -90, 0.15, -90, 0.02)
 
 
@@ -512,8 +535,8 @@ def test_a_single_slip_costs_at_most_its_own_row(seed, k, slip):
     """One parameter of T_k typed wrong, in any valid assignment: at most T_k is charged
     (nothing when the slip leaves a valid answer, e.g. x6 turned over), never a later row,
     and a charged frame flip names the parameter of T_k."""
-    frames = puma.random_valid_frames(np.random.default_rng(seed))
-    rows = puma.dh_rows_from_frames(frames)
+    frames = VF.random_valid_frames(np.random.default_rng(seed))
+    rows = VF.dh_rows_from_frames(frames)
     if SLIPS[slip](rows[k - 1]) == rows[k - 1]:
         return                                                     # -α with α = 0: no slip at all
     rows[k - 1] = SLIPS[slip](rows[k - 1])
@@ -522,11 +545,11 @@ def test_a_single_slip_costs_at_most_its_own_row(seed, k, slip):
     wrong = _wrong(report.part("part3"))
     labels = [w.label.split(" ")[0] for w in wrong]
     if not labels:                                                 # then the answer really is valid
-        match = checks.chain_matches(checks._rows(ans.answers_from_namespace(ns)))
+        match = checks.chain_matches(checks.rows_of(ans.answers_from_namespace(ns)))
         assert all(match["axes"]) and match["end_effector"] and match["last_z"]
         # ... but frame k may have turned (x6 the other way): link k, drawn in the old one, pays
-        mine = puma.dh_frames([(1, None, math.radians(th) + 0, d, a, math.radians(al))
-                               for _, th, d, a, al in rows], np.zeros((1, 6)))[0]
+        mine = R.dh_frames([(1, None, math.radians(th) + 0, d, a, math.radians(al))
+                            for _, th, d, a, al in rows], None, np.zeros((1, 6)))[0]
         moved = [f"{j}" for j in range(7) if not np.allclose(mine[j], frames[j], atol=1e-6)]
         assert [w.label.split(" ")[1] for w in _wrong(report.part("part2"))] == moved and len(moved) <= 1
     else:
@@ -548,9 +571,9 @@ def test_the_issues_slips_cost_one_item_each_and_name_the_parameter():
         assert [w.label.split(" ")[0] for w in wrong] == [name] and words in wrong[0].message
         assert _scores(report) == pytest.approx([2, 3, 5 * 6 / 7], abs=0.01)
     # frames with x1 backwards (a valid choice), and the +180° of θ1 forgotten
-    frames = list(puma.reference().home_frames)
+    frames = list(R.reference().home_frames)
     frames[1] = frames[1] @ np.diag([-1.0, -1, 1, 1])
-    rows = puma.dh_rows_from_frames(frames)
+    rows = VF.dh_rows_from_frames(frames)
     assert round(rows[0][1]) == 180
     rows[0] = (rows[0][0], 0.0, *rows[0][2:])
     report = _report(_rows_to_namespace(_solution_namespace(), rows))
@@ -604,12 +627,12 @@ def _fixture_namespaces():
     """The solution, valid alternatives, and answers with one slip (the slip fixtures)."""
     out = {"solution": _solution_namespace()}
     for seed in (1, 2):
-        out[f"random valid {seed}"] = _namespace_from_frames(puma.random_valid_frames(np.random.default_rng(seed)))
+        out[f"random valid {seed}"] = _namespace_from_frames(VF.random_valid_frames(np.random.default_rng(seed)))
     slip = _solution_namespace()
     slip["T1"] = A.Tz(q1, 0) @ A.Tx(-90, 0)
     slip["chain"] = _chain(slip)
     out["slip α1"] = slip
-    mixed = _namespace_from_frames(puma.random_valid_frames(np.random.default_rng(5)))
+    mixed = _namespace_from_frames(VF.random_valid_frames(np.random.default_rng(5)))
     mixed["link_points"] = _solution_namespace()["link_points"]
     out["mixed frames"] = mixed
     return out
@@ -678,7 +701,7 @@ def test_the_notebook_and_the_grader_read_through_the_same_functions():
     code = runner._extract_code(Path("/tmp/x.json"))
     assert "def to_plain(" in code and "def encode_json(" in code
     ns = {"link_points": [[(np.float64(1.0), np.float64(2.0), np.float64(3.0))]]}
-    raw = ans.encode_json({k: ans.to_plain(v) for k, v in ns.items()})
+    raw = encode.encode_json({k: encode.to_plain(v) for k, v in ns.items()})
     assert json.loads(raw) == {"link_points": [[[1.0, 2.0, 3.0]]]}
     assert ans.answers_from_namespace(ns).link_points == [[(1.0, 2.0, 3.0)]]
 
@@ -689,7 +712,7 @@ def test_any_answer_gets_feedback_never_an_exception():
             [None, True], {"a": object()}, np.array([[1, 2], [3, 4]]), np.zeros((0, 3)), sp.Symbol("x"),
             [[1, 2, 3, 1]], [(1e300, 0, 0)], 10 ** 400, lambda q: q, type, ...]
     for value in junk:
-        for name in ans.ANSWER_NAMES:
+        for name in encode.ANSWER_NAMES:
             ns = {**_solution_namespace(), name: value}
             for part in (1, 2, 3):
                 feedback = A.check_part(part, ns)
@@ -721,8 +744,8 @@ def test_a_slip_before_a_run_of_parallel_axes_costs_one_item(key):
     too ("T4 … crosses it 0.51 m short … check d4"). Every single slip that changes how the chain
     moves costs exactly one item of part 3 (ground truth: the robot's motion, not the grader)."""
     from test_variants import _lost, _moves_like, _namespace_from_rows, _report, _rows_in_degrees
-    from dhlab.course.family_model import random_valid_frames
-    from dhlab.grading import variants as V
+    from dhlab.assignment.model import random_valid_frames
+    from dhlab.assignment import variants as V
     rng = np.random.default_rng(22)
     counted = 0
     for seed in range(3):
@@ -749,8 +772,8 @@ def test_a_dropped_theta_offset_on_parallel_axes_names_theta_not_a_tiny_distance
     feedback used to say "x2 must cross z1 … 3.307e-18 m past that point … check d2" (the wrong
     parameter, a meaningless distance, and a correct d2 to change when the origin was slid)."""
     from test_variants import _lost, _namespace_from_rows, _report, _rows_in_degrees
-    from dhlab.course.family_model import random_valid_frames
-    from dhlab.grading import variants as V
+    from dhlab.assignment.model import random_valid_frames
+    from dhlab.assignment import variants as V
     rng = np.random.default_rng(9)
     seen = 0
     for seed in range(3):
@@ -766,7 +789,7 @@ def test_a_dropped_theta_offset_on_parallel_axes_names_theta_not_a_tiny_distance
             message = report.part("part3").items[1].message
             assert "θ2" in message and "check d2" not in message, message
             for number in re.findall(r"(\d[\d.e+-]*) m\b", message):
-                assert float(number) >= puma.TOL_POS, message            # no distance below the tolerance
+                assert float(number) >= R.TOL_POS, message            # no distance below the tolerance
     assert seen >= 3
 
 
@@ -775,10 +798,10 @@ def test_a_second_slip_never_raises_the_score_on_runs_of_parallel_axes(key):
     """Monotonicity where three or more axes are parallel (UR5 joints 2–4, the Cobra's column):
     from an answer with one slip, a second slip in another row never raises any part's score. Two
     independent slips in one run may be charged as one item (the frames there may slide: the
-    trade-off documented in the README); they are never charged as less than one."""
+    trade-off documented in docs/grading/assignment.md); they are never charged as less than one."""
     from test_variants import _lost, _moves_like, _namespace_from_rows, _report, _row_mistakes, _rows_in_degrees
-    from dhlab.course.family_model import random_valid_frames
-    from dhlab.grading import variants as V
+    from dhlab.assignment.model import random_valid_frames
+    from dhlab.assignment import variants as V
     rng = np.random.default_rng(23)
     robot = V.robot_of_variant(V.variant(key, 4))
     Q = np.vstack([np.zeros(robot.n)] + [[rng.uniform(max(lo, -3.0), min(hi, 3.0)) for lo, hi in robot.qlim]
@@ -811,7 +834,7 @@ def test_a_second_slip_never_raises_the_score_on_runs_of_parallel_axes(key):
 def test_part2_is_scored_after_part3_in_the_notebook_so_nbgrader_agrees_with_the_gradebook():
     """Part 2 is checked in the frames of the student's T_k: its scored cell (nbgrader runs the notebook
     from the top) must come after part 3's answers; in its old place a first check is not scored."""
-    for path in (SOURCE, generate.STUDENT):
+    for path in (SOURCE, STUDENT):
         cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
         ids = [c["metadata"].get("nbgrader", {}).get("grade_id") for c in cells]
         assert ids.index("part2_answers") < ids.index("part2_preview") < ids.index("part3_answers") \

@@ -16,11 +16,11 @@ import unicodedata
 import pytest
 
 from dhlab import DHLabError
+from dhlab.assignment import variants as V
 from dhlab.grading import csvsafe
 from dhlab.grading import grade_variants as GV
 from dhlab.grading import lms
 from dhlab.grading import release as R
-from dhlab.grading import variants as V
 from dhlab.grading.export import main as export
 from dhlab.grading.gradebook import COLUMNS, VARIANT_COLUMNS, feedback_filename, read_csv, write_csv
 
@@ -31,7 +31,7 @@ FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
 
 @pytest.fixture(autouse=True)
 def _the_puma_again():
-    from dhlab.course.family_notebook import clear_variant
+    from dhlab.assignment.notebook_cells import clear_variant
     yield
     clear_variant()
 

@@ -21,11 +21,12 @@ from types import SimpleNamespace
 
 import pytest
 
-from dhlab.grading import answers as ans
+from dhlab.assignment import encode
 from dhlab.grading import cleanup, cli, gradebook, rows, selfcheck
-from dhlab.grading.generate import SOURCE
+from dhlab.grading.generate import CHECKOUT_SOURCE
 
 ROOT = Path(__file__).resolve().parents[1]
+SOURCE = ROOT / CHECKOUT_SOURCE                      # the teacher's notebook, with the solutions
 STUDENT = ROOT / "notebooks" / "08_puma_assignment.ipynb"
 SUBMISSIONS = ROOT / "tests" / "data" / "submissions"
 AGAIN = "(not the student's fault: grade again with --resume)"
@@ -41,7 +42,7 @@ def _solution_json() -> str:
         if meta.get("grade_id") == "setup" or meta.get("solution"):
             exec(compile("".join(cell["source"]), meta["grade_id"], "exec"), ns)
     ns["chain"] = ns["T1"] @ ns["T2"] @ ns["T3"] @ ns["T4"] @ ns["T5"] @ ns["T6"]
-    return ans.encode_json({name: ans.to_plain(ns[name]) for name in ans.ANSWER_NAMES if name in ns})
+    return encode.encode_json({name: encode.to_plain(ns[name]) for name in encode.ANSWER_NAMES if name in ns})
 
 
 FULL = _solution_json()

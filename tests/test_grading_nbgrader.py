@@ -19,7 +19,7 @@ import pytest
 pytest.importorskip("nbgrader")
 
 ROOT = Path(__file__).resolve().parents[1]
-SOURCE = ROOT / "dhlab" / "grading" / "data" / "08_puma_assignment.ipynb"
+SOURCE = ROOT / "tools" / "teacher" / "08_puma_assignment.ipynb"       # the teacher's, with the solutions
 STUDENT = ROOT / "notebooks" / "08_puma_assignment.ipynb"
 CONFIG = """c = get_config()
 c.CourseDirectory.root = {root!r}

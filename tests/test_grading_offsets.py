@@ -1,13 +1,14 @@
 """Feedback on an offset along a run of parallel axes names the d the student changed
-(dhlab.grading.offsets): on the UR5 (joints 2-3-4 parallel) and the Cobra (every axis vertical)
+(dhlab.assignment.checks.offsets): on the UR5 (joints 2-3-4 parallel) and the Cobra (every axis vertical)
 a slip in d2 shows only at the end of the run, where d2, d3, d4 … are equivalent fixes."""
 import re
 
 import numpy as np
 import pytest
 
-from dhlab.course.family_model import random_valid_frames
-from dhlab.grading import puma, variants as V
+from dhlab.assignment import reference as R
+from dhlab.assignment import variants as V
+from dhlab.assignment.model import random_valid_frames
 from test_variants import _lost, _namespace_from_rows, _report, _rows_in_degrees
 
 
@@ -50,7 +51,7 @@ def test_on_frames_of_the_students_own_the_equivalent_offsets_are_all_named(key,
         named = _named(messages[0])
         assert k in named and named <= run, messages[0]
         for distance in re.findall(r"([0-9.e-]+) m (?:short of|past|away)", messages[0]):
-            assert float(distance) > puma.TOL_POS, messages[0]
+            assert float(distance) > R.TOL_POS, messages[0]
 
 
 def test_the_cobra_reference_frames_name_the_slipped_offset():

@@ -8,14 +8,17 @@ the student.
 """
 import json
 import re
+from pathlib import Path
 
 import pytest
 
-from dhlab.course.family_notebook import clear_variant, release_notebook
+from dhlab.assignment import variants as V
+from dhlab.assignment.notebook_cells import clear_variant, release_notebook
 from dhlab.grading import grade_variants as GV
 from dhlab.grading import release as R
-from dhlab.grading import variants as V
-from dhlab.grading.generate import SOURCE, student_notebook
+from dhlab.grading.generate import CHECKOUT_SOURCE, student_notebook
+
+SOURCE = Path(__file__).resolve().parents[1] / CHECKOUT_SOURCE     # the teacher's notebook
 
 SECRET = b"release-text-test-secret-0123456789"
 

@@ -16,10 +16,10 @@ from pathlib import Path
 
 import pytest
 
+from dhlab.assignment import variants as V
+from dhlab.assignment.answers import parse_answers
+from dhlab.assignment.checks import check_all
 from dhlab.grading import release as R
-from dhlab.grading import variants as V
-from dhlab.grading.answers import parse_answers
-from dhlab.grading.checks import check_all
 from dhlab.grading.gradebook import status_text
 from dhlab.grading.language import _, speaking
 from dhlab.grading.progress import _summary

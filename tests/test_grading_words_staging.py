@@ -9,12 +9,12 @@ import time
 
 import pytest
 
-from dhlab.course.case_words import read_case_words
-from dhlab.course.exercises_dh_rules import _read_case
+from dhlab.course.checks.case_words import read_case_words
+from dhlab.course.exercises.dh_rules import read_case
 from dhlab.grading import notebook_code as NC
 from dhlab.grading import staging
-from dhlab.grading.answers import Unreadable, parse_answers
-from dhlab.grading.checks import check_part1
+from dhlab.assignment.answers import Unreadable, parse_answers
+from dhlab.assignment.checks import check_part1
 from dhlab.grading.language import speaking
 
 PUMA_CASES = ["intersect", "parallel", "skew", "intersect", "intersect"]
@@ -76,7 +76,7 @@ def test_the_lesson_and_the_grader_read_every_word_alike():
              "they do not intersect", "parallel or skew", "case 2", "caso 3", "3", "hello", "ni paralelos ni se "
              "intersecan", "Intersecting", "alabeadas", "misma recta", "not skew", "se cortan"]
     for word in words:
-        lesson = _read_case(word)[0]
+        lesson = read_case(word)[0]
         graded = parse_answers({"x_cases": [word]}).x_cases[0]
         assert lesson == (None if isinstance(graded, Unreadable) else graded) == read_case_words(word).case, word
 

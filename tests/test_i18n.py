@@ -12,9 +12,9 @@ from pathlib import Path
 import pytest
 
 import dhlab
-from dhlab import i18n_catalog
 from dhlab.i18n import _, get_language, language_from_env, set_language
 from dhlab.validation import DHLabError
+from tools import i18n_catalog
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -39,7 +39,7 @@ def code_messages():
 
 def test_every_message_of_the_code_is_in_the_catalog(catalog, code_messages):
     missing = sorted(code_messages - {m.id for m in catalog if m.id})
-    assert not missing, f"{len(missing)} messages not in the Spanish catalog (python -m dhlab.i18n_catalog " \
+    assert not missing, f"{len(missing)} messages not in the Spanish catalog (python -m tools.i18n_catalog " \
                         f"extract; ... update; translate): {missing[:5]}"
 
 
@@ -67,12 +67,12 @@ def test_the_compiled_catalog_matches_its_source(catalog):
     with open(i18n_catalog.po_path("es").with_suffix(".mo"), "rb") as f:
         compiled = gettext.GNUTranslations(f)
     stale = [m.id for m in catalog if m.id and m.string and compiled.gettext(m.id) != m.string]
-    assert not stale, f".mo is stale (python -m dhlab.i18n_catalog compile): {stale[:3]}"
+    assert not stale, f".mo is stale (python -m tools.i18n_catalog compile): {stale[:3]}"
 
 
 def test_the_template_lists_the_messages_of_the_code(code_messages):
     template = i18n_catalog._read(i18n_catalog.TEMPLATE)
-    assert {m.id for m in template if m.id} == code_messages, "run python -m dhlab.i18n_catalog extract"
+    assert {m.id for m in template if m.id} == code_messages, "run python -m tools.i18n_catalog extract"
 
 
 def test_the_check_command_reports_a_missing_translation(tmp_path, monkeypatch):
@@ -96,14 +96,14 @@ def test_every_module_belongs_to_exactly_one_domain():
     every = set((ROOT / "dhlab").rglob("*.py"))
     assert files["dhlab"] | files["dhlab_grading"] == every
     assert ROOT / "dhlab" / "grading" / "cli.py" in files["dhlab_grading"]
-    assert ROOT / "dhlab" / "assign" / "report.py" in files["dhlab_grading"]
+    assert ROOT / "dhlab" / "dh_frames" / "report.py" in files["dhlab_grading"]
 
 
 def test_a_grader_message_is_found_through_the_lessons_catalog():
     """``_`` looks in the lessons' catalog, then the grader's: one function for both."""
     import gettext
     from dhlab import i18n
-    es = i18n._catalog("es")
+    es = i18n.translations("es")
     assert isinstance(es, gettext.GNUTranslations)
     assert (i18n_catalog.po_path("es", "dhlab_grading").with_suffix(".mo")).exists()
 
@@ -184,7 +184,7 @@ def test_boundary_error_in_spanish(spanish):
 
 def test_a_message_shown_after_the_switch_is_in_the_new_language():
     """Messages are translated when shown, not when the module is imported."""
-    from dhlab.course.feedback import NOT_ANSWERED, unanswered
+    from dhlab.course.checks.feedback import NOT_ANSWERED, unanswered
     assert NOT_ANSWERED in str(unanswered("q"))
     previous = set_language("es")
     try:
@@ -234,20 +234,20 @@ def test_a_glossary_still_asks_for_the_english_word():
                                       ("caso 3", True), ("paralelas", False), ("no se cortan", False)])
 def test_the_case_of_x1_in_spanish(said, ok):
     """x1 of the exercise arm: z0 and z1 are skew (exercise 5.1)."""
-    from dhlab.course.exercises_dh import exercise
+    from dhlab.course.exercises import exercise
     fb = exercise("5.1").check({1: said, 2: "parallel", 3: "intersect"})
     assert fb.ok is ok
 
 
 def test_the_case_feedback_in_spanish(spanish):
-    from dhlab.course.exercises_dh import exercise
+    from dhlab.course.exercises import exercise
     text = str(exercise("5.1").check({1: "paralelos", 2: "paralelos", 3: "se cortan"}))
     assert "Ejercicio 5.1: los casos de x1 … x3 todavía no están bien." in text
     assert "dijo que z0 y z1 son paralelos" in text
 
 
 def test_a_table_feedback_in_spanish(spanish):
-    from dhlab.course.exercises_dh import check_table
+    from dhlab.course.exercises import check_table
     text = str(check_table([("q1", 0.5, 0.2, -90), ("q2 - 90", 0, 0.5, -90), ("q3", 0, 0, -90), ("q4", 0.5, 0, 0)]))
     assert text.startswith("✗ su tabla todavía no está bien: corrija esto primero")
     assert "articulación 3: su α2 es -90°" in text and "son paralelos" in text
@@ -309,7 +309,7 @@ def test_the_ik_and_the_table_in_spanish(spanish):
 
 
 def test_a_lesson_helper_in_spanish(spanish):
-    from dhlab.course.lesson_dh_convention import place_x, three_cases
+    from dhlab.course.lessons.lesson_dh_convention import place_x, three_cases
     z_prev, cases = three_cases()
     assert str(place_x(z_prev, cases["case 3"])).startswith("se cruzan  normal común de (0, 0, 0.5) a")
     with pytest.raises(DHLabError, match="son la misma recta"):
@@ -327,7 +327,7 @@ def test_every_spanish_figure_text_is_inside_the_figure(name, spanish):
 
 
 def test_a_figure_title_in_spanish(spanish):
-    from dhlab.course import figures_dh
+    from dhlab.course.lessons import figures_dh
     fig = figures_dh.dh_parameters_figure()
     assert fig.axes[0].get_title() == "los cuatro parámetros DH del eslabón $i$"
 
@@ -415,7 +415,7 @@ def test_the_lesson_notebooks_print_no_unmarked_english():
              if (english := printed_english(source))}
     assert not found, (f"{len(found)} code cells print English the Spanish edition cannot translate: write "
                        f"print(_(\"same table:\"), ok) or _(\"x{{i}}: case {{case}}\").format(...), then "
-                       f"python -m dhlab.i18n_catalog extract/update and translate: {list(found.items())[:3]}")
+                       f"python -m tools.i18n_catalog extract/update and translate: {list(found.items())[:3]}")
 
 
 @pytest.mark.parametrize("source, english", [
@@ -443,3 +443,36 @@ def test_underscore_is_not_rebound_in_the_lesson_notebooks():
                for node in ast.walk(ast.parse(i18n_catalog.cell_python(source)))
                if isinstance(node, ast.Name) and node.id == "_" and isinstance(node.ctx, ast.Store)]
     assert not rebound, f"cells that rebind _ (name the value instead): {rebound}"
+
+
+def test_speaking_sets_the_language_of_this_thread_only():
+    """One ``_`` for the course and the grader: ``speaking(lang)`` holds for its thread, the course's
+    language (set_language) everywhere else."""
+    import threading
+
+    from dhlab.i18n import current_language, speaking
+
+    seen = {}
+
+    def other_thread():
+        seen["other"] = (current_language(), _("not answered"))
+
+    with speaking("es"):
+        assert (current_language(), _("not answered")) == ("es", "sin responder")
+        worker = threading.Thread(target=other_thread)
+        worker.start()
+        worker.join()
+    assert seen["other"] == ("en", "not answered")
+    assert current_language() == get_language() == "en"
+    with pytest.raises(DHLabError, match="not one of the course's languages"):
+        with speaking("fr"):
+            pass
+
+
+def test_the_grader_language_helpers_live_in_i18n():
+    from dhlab.i18n import case_word, checked_language, ngettext, speaking, split_language
+
+    assert checked_language("Spanish") == "es" and split_language(["x", "--language=es"]) == ("es", ["x"])
+    with speaking("es"):
+        assert case_word("parallel") != "parallel"
+    assert ngettext("{n} joint", "{n} joints", 2) == "{n} joints"

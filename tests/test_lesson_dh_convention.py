@@ -1,4 +1,4 @@
-"""dhlab.course.lesson_dh_convention: notebook 5's helpers place x_i by rule 7 and measure DH rows by seed
+"""dhlab.course.lessons.lesson_dh_convention: notebook 5's helpers place x_i by rule 7 and measure DH rows by seed
 002's sentences; checked against the geometry and the robots' own link matrices, not against typed answers."""
 import math
 
@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import dhlab
-from dhlab.course.lesson_dh_convention import (fmt, measured_row, measured_rows_agree, place_x,
+from dhlab.course.lessons.lesson_dh_convention import (fmt, measured_row, measured_rows_agree, place_x,
                                                prismatic_a_lines, three_cases)
 from dhlab.transforms import dh_matrix
 from dhlab.validation import DHLabError

@@ -1,4 +1,4 @@
-"""Notebook 06's lesson helpers (dhlab.course.lesson_dh_examples): the slides' matrices are read
+"""Notebook 06's lesson helpers (dhlab.course.lessons.lesson_dh_examples): the slides' matrices are read
 faithfully, the verified cases and the table read off the frames are reported truthfully, and the
 wrist centre behaves as a spherical wrist's must (checked here from the frames, independently)."""
 import re
@@ -8,7 +8,7 @@ import pytest
 import sympy as sp
 
 import dhlab
-from dhlab.course.lesson_dh_examples import (check_cases, compare_with_slide, elbow_flipped, fmt, from_slide,
+from dhlab.course.lessons.lesson_dh_examples import (check_cases, compare_with_slide, elbow_flipped, fmt, from_slide,
                                              hand_derived_003, read_rows_at_zero, signed_angle, wrist_centre,
                                              wrist_centre_check, wrist_centre_panel)
 from dhlab.data import load as load_data

@@ -1,11 +1,11 @@
-"""Notebook 2's helpers (dhlab.course.lesson_homogeneous): the print helpers and the seeds' matrices
+"""Notebook 2's helpers (dhlab.course.lessons.lesson_homogeneous): the print helpers and the seeds' matrices
 as printed, each checked against what dhlab computes or against an independent transcription."""
 import numpy as np
 import pytest
 import sympy as sp
 
 from dhlab.course.exercises import seed001_DefinirTHz
-from dhlab.course.lesson_homogeneous import (fmt, matrix_text, seed001_rotation_block, seed002_A,
+from dhlab.course.lessons.lesson_homogeneous import (fmt, matrix_text, seed001_rotation_block, seed002_A,
                                              seed004_eq1)
 from dhlab.transforms import Rz, dh_matrix, trans
 from dhlab.validation import DHLabError

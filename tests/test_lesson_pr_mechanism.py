@@ -1,4 +1,4 @@
-"""Notebook 04's lesson helpers (dhlab.course.lesson_pr_mechanism): what they print is what the
+"""Notebook 04's lesson helpers (dhlab.course.lessons.lesson_pr_mechanism): what they print is what the
 mechanism does, checked against formulas computed here independently."""
 import math
 import re
@@ -8,7 +8,7 @@ import pytest
 import sympy as sp
 
 import dhlab
-from dhlab.course.lesson_pr_mechanism import (branch_residuals, branches_within_limits, compare_methods, fmt,
+from dhlab.course.lessons.lesson_pr_mechanism import (branch_residuals, branches_within_limits, compare_methods, fmt,
                                               geometric_examples_figure, ik_report, pr_mechanism_figure,
                                               workspace_report)
 from dhlab.validation import DHLabError

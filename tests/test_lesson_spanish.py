@@ -23,7 +23,7 @@ def english_lines(text) -> list:
 
 
 def _pr():
-    from dhlab.course import lesson_pr_mechanism as P
+    from dhlab.course.lessons import lesson_pr_mechanism as P
     pr = dhlab.robots.pr_mechanism()
     return {"ik_report": P.ik_report(pr, [(2.0, 0.25), (2.0, -0.4), (1.2, 0.5), (2.0, 0.6)]),
             "branches_within_limits": P.branches_within_limits(pr, 1.2, 0.25),
@@ -31,15 +31,15 @@ def _pr():
 
 
 def _dh_examples():
-    from dhlab.course import lesson_dh_examples as E
+    from dhlab.course.lessons import lesson_dh_examples as E
     rppr, arm6, arm3 = dhlab.robots.seed002_4dof(), dhlab.robots.seed002_6dof(), dhlab.robots.seed003_6dof()
     return {"check_cases": E.check_cases(rppr, "002_4dof"), "check_cases 6": E.check_cases(arm6, "002_6dof"),
             "read_rows_at_zero": E.read_rows_at_zero(arm3)}
 
 
 def _ssrms():
-    from dhlab.course import lesson_ssrms as S
-    from dhlab.course.ssrms_steps import case_name, x_steps
+    from dhlab.course.lessons import lesson_ssrms as S
+    from dhlab.course.lessons.ssrms_steps import case_name, x_steps
     ssrms = dhlab.robots.ssrms()
     return {"frames_table": S.frames_table(ssrms.frames(ssrms.qz)),
             "x_steps": "\n".join(str(step) for step in x_steps(ssrms)),
@@ -47,8 +47,8 @@ def _ssrms():
 
 
 def _two_dof_and_rules():
-    from dhlab.course import lesson_dh_convention as C
-    from dhlab.course import lesson_two_dof as T
+    from dhlab.course.lessons import lesson_dh_convention as C
+    from dhlab.course.lessons import lesson_two_dof as T
     z_prev, cases = C.three_cases()
     return {"seed004_comparison": T.seed004_comparison(dhlab.robots.robot_no_tan_elemental_1(),
                                                        dhlab.robots.robot_no_tan_elemental_2()),
@@ -70,7 +70,7 @@ def test_the_lesson_helpers_print_spanish(helpers):
 
 
 def test_a_step_of_paso_2_in_spanish():
-    from dhlab.course.ssrms_steps import x_steps
+    from dhlab.course.lessons.ssrms_steps import x_steps
     previous = set_language("es")
     try:
         step = str(x_steps(dhlab.robots.ssrms())[2])

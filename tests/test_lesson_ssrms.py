@@ -1,4 +1,4 @@
-"""Notebook 7's print helpers (dhlab.course.lesson_ssrms) and seed 001's arm (ssrms_program.seed001_frames),
+"""Notebook 7's print helpers (dhlab.course.lessons.lesson_ssrms) and seed 001's arm (ssrms_program.seed001_frames),
 measured against the arm, the line maths and the verified cases; and notebook 7 as a deck: its set-up
 hidden, its helper code out of its lesson cells, its C++ appendix off the lecture's screens."""
 import json
@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from dhlab import robots
-from dhlab.course.lesson_ssrms import axis_relations, factors_latex, fmt, frames_table, same_axes, seed_words
-from dhlab.course.ssrms_program import CONFIGURAR_TH, seed001_frames
+from dhlab.course.lessons.lesson_ssrms import axis_relations, factors_latex, fmt, frames_table, same_axes, seed_words
+from dhlab.course.lessons.ssrms_program import CONFIGURAR_TH, seed001_frames
 from dhlab.data import load as load_data
 from dhlab.lines import relation
 from dhlab.transforms import Rx, trans

@@ -1,4 +1,4 @@
-"""Notebook 3's helpers (dhlab.course.lesson_two_dof): the seed's matrices as printed, slips included,
+"""Notebook 3's helpers (dhlab.course.lessons.lesson_two_dof): the seed's matrices as printed, slips included,
 measured against dhlab's robots; the link directions; the figures; the comparison table."""
 import matplotlib
 
@@ -9,7 +9,7 @@ import pytest  # noqa: E402
 import sympy as sp  # noqa: E402
 
 from dhlab import deg2rad, robots  # noqa: E402
-from dhlab.course import lesson_two_dof as lesson  # noqa: E402
+from dhlab.course.lessons import lesson_two_dof as lesson  # noqa: E402
 from dhlab.validation import DHLabError  # noqa: E402
 
 l1, l2, l = sp.symbols("l1 l2 l")

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from dhlab import exercises_dh
-from dhlab.grading import puma
+from dhlab.assignment import reference as puma
 from dhlab.lines import Line, LineRelation, closest_points, relation
 from dhlab.validation import DHLabError
 

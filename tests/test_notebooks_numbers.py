@@ -1,6 +1,6 @@
 """The numbers the notebooks state are the numbers their code prints, and those match seed_cases.json.
 
-These tests read the stored notebooks (executed by ``python -m dhlab.execute``; nbval checks that the stored
+These tests read the stored notebooks (executed by ``python -m tools.execute``; nbval checks that the stored
 outputs are what the code prints today). They check that:
 
 * every decimal number written in a notebook's text (outside the exercise statements, whose numbers are

@@ -3,8 +3,8 @@ from the geometry (not from a key typed here)."""
 import pytest
 
 import dhlab
-import dhlab.course.exercises_dh
-from dhlab.course.dh_first_robot import DRAWN_Q, FIRST_ROBOT_ROWS, first_robot
+import dhlab.course.exercises
+from dhlab.course.lessons.dh_first_robot import DRAWN_Q, FIRST_ROBOT_ROWS, first_robot
 from dhlab.course.predict import (Prediction, case_prediction, check_row_prediction, entry_prediction,
                                   point_prediction, reveal, row_prediction, step_prediction)
 from dhlab.mdh import to_modified
@@ -52,7 +52,7 @@ ARM_4AXIS = [("q1", 0.5, 0.2, -90), ("q2 - 90", 0, 0.5, 0), ("q3", 0, 0, -90), (
 
 @pytest.mark.parametrize("robot, rows, q", [
     (dhlab.robots.seed002_4dof(), SLIDE_RPPR, [0.4, 0.3, 0.7, -1.2]),
-    (dhlab.course.exercises_dh.four_axis_arm(), ARM_4AXIS, [0.3, -0.5, 1.1, 2.0]),
+    (dhlab.course.exercises.four_axis_arm(), ARM_4AXIS, [0.3, -0.5, 1.1, 2.0]),
 ])
 def test_typed_rows_right_at_any_pose_and_a_changed_entry_wrong(robot, rows, q):
     """Rows typed as on the slides (offsets, names) pass against the frames drawn at q (joint angles read

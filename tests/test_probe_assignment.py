@@ -11,7 +11,7 @@ import sympy as sp
 
 import dhlab
 from dhlab import assignment as A
-from dhlab.grading import answers as ans
+from dhlab.assignment import answers as ans
 from dhlab.validation import DHLabError
 
 q1, q2 = A.joint_variables(2)

@@ -1,5 +1,5 @@
 """Probe 14, defects Q-U: the exercise checks of notebooks 1-7 and the public helpers of
-dhlab.exercises_dh. A check never raises on a student's answer and never marks a wrong one correct."""
+dhlab.course.exercises. A check never raises on a student's answer and never marks a wrong one correct."""
 import functools
 
 import numpy as np
@@ -8,8 +8,7 @@ import sympy as sp
 
 import dhlab
 from dhlab import DHLabError
-from dhlab.course.exercises import exercise as course_exercise
-from dhlab.course.exercises_dh import exercise as dh_exercise
+from dhlab.course.exercises import exercise
 
 TH, T0, T1, L1, L2 = sp.symbols("theta theta0 theta1 l1 l2")
 C2, S2 = sp.symbols("C2 S2")
@@ -18,7 +17,7 @@ RIGHT_32 = dhlab.Rz(T0) * dhlab.trans(L1, 0, 0) * dhlab.Rz(T1) * dhlab.trans(L2,
 
 
 def check(key, answer):
-    return (course_exercise if key < "5" else dh_exercise)(key).check(answer)
+    return exercise(key).check(answer)
 
 
 def half_cos(M, th):
@@ -100,8 +99,8 @@ def test_U_an_answer_that_cannot_be_printed_gets_feedback(key, answer):
     assert feedback.status == "wrong" and feedback.items
 
 
-# --- Q: the public helpers of dhlab.exercises_dh refuse bad teacher arguments ----------------------------
-X = dhlab.exercises_dh
+# --- Q: the public helpers of dhlab.course.exercises refuse bad teacher arguments -------------------------
+X = dhlab.course.exercises
 
 
 @pytest.mark.parametrize("call", [

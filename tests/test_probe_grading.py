@@ -11,12 +11,15 @@ from types import SimpleNamespace
 import pytest
 
 from dhlab import assignment as A
-from dhlab.grading import answers as ans
-from dhlab.grading import checks, cli, gradebook, part3, rows
-from dhlab.grading.generate import SOURCE, student_notebook
+from dhlab.assignment import answers as ans
+from dhlab.assignment import checks
+from dhlab.assignment.checks.analysis import point_text
+from dhlab.grading import cli, gradebook, rows
+from dhlab.grading.generate import CHECKOUT_SOURCE, student_notebook
 
 q1, q2, q3, q4, q5, q6 = A.joint_variables(6)
 ROOT = Path(__file__).resolve().parents[1]
+SOURCE = ROOT / CHECKOUT_SOURCE                      # the teacher's notebook, with the solutions
 STUDENT = ROOT / "notebooks" / "08_puma_assignment.ipynb"
 KERNEL_DIED = "RuntimeError: Kernel died before replying to kernel_info"
 SYNTAX = ("closing parenthesis '}' does not match opening parenthesis '[' on line 11 (98695007.py, line 14)")
@@ -121,8 +124,8 @@ def test_a_kernel_that_died_in_a_cell_of_the_assignment_does_not_blame_the_stude
 
 
 def test_the_released_your_robot_cell_is_a_cell_of_the_assignment():
-    from dhlab.course.family_notebook import SEAM_CELL_ID, release_notebook
-    from dhlab.grading import variants
+    from dhlab.assignment import variants
+    from dhlab.assignment.notebook_cells import SEAM_CELL_ID, release_notebook
     record = {"variant": variants.variant("kr5", "ana").to_dict(), "student_id": "ana"}
     nb, _ = release_notebook(student_notebook(json.loads(SOURCE.read_text(encoding="utf-8"))), record, figures=False)
     cells = gradebook.Cells(_numbered(nb))
@@ -150,8 +153,8 @@ def test_a_flip_message_names_only_the_rows_the_robot_has(name, T, later):
 # --- C2: zero is printed as 0 -------------------------------------------------------------------------
 
 def test_a_point_near_zero_prints_without_a_minus_sign():
-    assert checks._vec([-0.4318, -1e-17, 0.15005]) == "(-0.4318, 0.0000, 0.1500)"
-    assert part3._vec([-0.0, -4e-5, 1.0]) == "(0.0000, 0.0000, 1.0000)"
+    assert point_text([-0.4318, -1e-17, 0.15005]) == "(-0.4318, 0.0000, 0.1500)"
+    assert point_text([-0.0, -4e-5, 1.0]) == "(0.0000, 0.0000, 1.0000)"
 
 
 def test_a_constant_of_zero_in_theta_prints_as_0_degrees():
@@ -212,10 +215,10 @@ def test_part1_accepts_either_case_where_a_sliding_axis_may_be_drawn_to_meet_the
     """A prismatic joint fixes only its axis's direction: drawn through the other axis the pair
     intersects, drawn beside it the pair is skew. Both are valid sketches (between two turning
     joints the case is fixed, and the other one is still wrong)."""
-    from dhlab.course.family import family_names
-    from dhlab.course.family_model import build
-    from dhlab.grading import checks, puma
-    from dhlab.grading.answers import Answers
+    from dhlab.assignment import reference as puma
+    from dhlab.assignment.answers import Answers
+    from dhlab.assignment.family import family_names
+    from dhlab.assignment.model import build
 
     checked = 0
     for key in family_names():

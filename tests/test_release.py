@@ -5,8 +5,8 @@ import nbformat
 import pytest
 
 from dhlab import DHLabError
+from dhlab.assignment import variants as V
 from dhlab.grading import release as R
-from dhlab.grading import variants as V
 
 SECRET = b"0123456789abcdef-the-teacher-secret"
 
@@ -14,7 +14,7 @@ SECRET = b"0123456789abcdef-the-teacher-secret"
 @pytest.fixture(autouse=True)
 def _the_puma_again():
     """A test that runs a notebook's "Your robot" cell (use_variant) leaves the PUMA in place after it."""
-    from dhlab.course.family_notebook import clear_variant
+    from dhlab.assignment.notebook_cells import clear_variant
     yield
     clear_variant()
 

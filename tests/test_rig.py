@@ -176,7 +176,7 @@ def test_the_browser_gets_the_rig_and_every_scene_says_its_pose():
     widget = panel.view.live.widget
     sent = []
     widget.send = lambda content, buffers=None: sent.append(content)
-    widget._on_browser_message(widget, {"kind": "ready"}, [])
+    widget.receive({"kind": "ready"})
     assert [m["kind"] for m in sent] == ["rig", "scene"]
     panel.sliders[2].value = -20.0
     assert sent[-1]["kind"] == "scene"
@@ -279,7 +279,7 @@ def test_a_dragged_slider_tells_the_kernel_at_most_every_250_ms_and_always_its_l
 def frozen_clock(monkeypatch):
     """The live figure's clock stands still: every step of a sweep counts as one drag however slow
     the machine (a loaded CI host once took longer than MOTION_S between two steps). A test moves
-    it by hand (``live._last_refresh -= 1.0``) to make a pause."""
+    it by hand (``live.last_refresh -= 1.0``) to make a pause."""
     from types import SimpleNamespace
 
     from dhlab.views import livefigure
@@ -307,14 +307,14 @@ def test_a_drag_frames_a_leaving_robot_again_at_most_once_a_second(monkeypatch):
     live = panel.view.live
     widget = live.widget
     widget.send = lambda content, buffers=None: None
-    widget._on_browser_message(widget, {"kind": "ready"}, [])
+    widget.receive({"kind": "ready"})
     redraws, out_of_frame = [], []
     widget.observe(lambda change: redraws.append(clock[0]), names="background")
     s = panel.sliders[1]
     for v in np.r_[np.linspace(s.value, s.max, 40), np.linspace(s.max, s.min, 40)]:
         clock[0] += 0.1                                          # a step every 0.1 s: one drag
         s.value = round(float(v) * 2) / 2
-        out_of_frame.append(framing.leaves_view(panel.view.ax, panel.view._framed_points()))
+        out_of_frame.append(framing.leaves_view(panel.view.ax, panel.view.framed_points()))
     # one background per redraw, even when its labels stick out and matplotlib draws it twice
     assert len(set(redraws)) == len(redraws), redraws
     redraws = sorted(set(redraws))
@@ -323,10 +323,10 @@ def test_a_drag_frames_a_leaving_robot_again_at_most_once_a_second(monkeypatch):
     longest = max((len(run) for run in "".join("x" if o else "." for o in out_of_frame).split(".")), default=0)
     assert longest * 0.1 <= livefigure.REDRAW_EVERY_S + 1e-9, f"out of frame for {longest} steps in a row"
     clock[0] += 1.0
-    widget._on_browser_message(widget, {"kind": "rest", "seq": live._seq}, [])
-    assert not live._at_rest and not framing.needs_reframe(panel.view.ax, panel.view._framed_points())
-    widget._on_browser_message(widget, {"kind": "rest", "seq": live._seq}, [])
-    assert widget.frame_seq == live._seq                     # then the exact frame
+    widget.receive({"kind": "rest", "seq": live.seq})
+    assert not live.waits_for_rest and not framing.needs_reframe(panel.view.ax, panel.view.framed_points())
+    widget.receive({"kind": "rest", "seq": live.seq})
+    assert widget.frame_seq == live.seq                     # then the exact frame
 
 
 def test_a_drag_that_was_just_framed_waits_for_the_rest(frozen_clock):
@@ -338,14 +338,14 @@ def test_a_drag_that_was_just_framed_waits_for_the_rest(frozen_clock):
     live = panel.view.live
     widget = live.widget
     widget.send = lambda content, buffers=None: None
-    widget._on_browser_message(widget, {"kind": "ready"}, [])
+    widget.receive({"kind": "ready"})
     redraws, redraw = [], live.redraw
     live.redraw = lambda: (redraws.append(1), redraw())
     sweep(panel)
-    assert len(redraws) <= 1 and live._at_rest              # at most one redraw while moving, one waiting
-    widget._on_browser_message(widget, {"kind": "rest", "seq": live._seq}, [])
-    assert not live._at_rest
-    assert not framing.needs_reframe(panel.view.ax, panel.view._framed_points())
+    assert len(redraws) <= 1 and live.waits_for_rest              # at most one redraw while moving, one waiting
+    widget.receive({"kind": "rest", "seq": live.seq})
+    assert not live.waits_for_rest
+    assert not framing.needs_reframe(panel.view.ax, panel.view.framed_points())
 
 
 def test_without_a_browser_every_step_is_framed_at_once():
@@ -355,7 +355,7 @@ def test_without_a_browser_every_step_is_framed_at_once():
         panel = dhlab.teach(dhlab.robots.ssrms(), backend=backend)
         panel.view.live.widget
         sweep(panel)
-        assert not panel.view.live._at_rest
+        assert not panel.view.live.waits_for_rest
         limits.append(panel.view.limits)
     np.testing.assert_allclose(np.asarray(limits[0], float), np.asarray(limits[1], float))
 
@@ -368,12 +368,12 @@ def test_a_picture_asked_for_after_a_drag_is_framed(frozen_clock):
     live = panel.view.live
     widget = live.widget
     widget.send = lambda content, buffers=None: None
-    widget._on_browser_message(widget, {"kind": "ready"}, [])
+    widget.receive({"kind": "ready"})
     sweep(panel)
-    assert live._at_rest
+    assert live.waits_for_rest
     live.png()
-    assert not live._at_rest
-    assert not framing.needs_reframe(panel.view.ax, panel.view._framed_points())
+    assert not live.waits_for_rest
+    assert not framing.needs_reframe(panel.view.ax, panel.view.framed_points())
 
 
 def test_while_dragged_the_labels_keep_their_place_and_rest_lays_them_out(frozen_clock):
@@ -384,18 +384,18 @@ def test_while_dragged_the_labels_keep_their_place_and_rest_lays_them_out(frozen
     widget = live.widget
     sent = []
     widget.send = lambda content, buffers=None: sent.append((content, buffers))
-    widget._on_browser_message(widget, {"kind": "ready"}, [])
+    widget.receive({"kind": "ready"})
     calls = []
-    layout = type(panel.view.labels)._layout
-    panel.view.labels._layout = lambda: (calls.append(1), layout(panel.view.labels))
-    live._last_refresh -= 1.0                      # the panel was made a while ago
+    layout = type(panel.view.labels).layout
+    panel.view.labels.layout = lambda: (calls.append(1), layout(panel.view.labels))
+    live.last_refresh -= 1.0                      # the panel was made a while ago
     for value in (10.0, 12.0, 14.0):
         panel.sliders[1].value = value
     assert live.dragged and len(calls) == 1        # the first step laid them out, the next two did not
     glyphs = [[i for i in content["items"] if i["kind"] == "glyphs" and i.get("leaders")][0]
               for content, _ in sent if content.get("kind") == "scene"][-2:]
     assert [p["codes"] for p in glyphs[0]["pieces"]] == [p["codes"] for p in glyphs[1]["pieces"]]
-    live._last_refresh -= 1.0                      # a pause
+    live.last_refresh -= 1.0                      # a pause
     panel.sliders[1].value = 16.0
     assert not live.dragged and len(calls) == 2
 

@@ -1,5 +1,5 @@
-"""Notebook 7's SSRMS step by step (dhlab.course.ssrms_steps, the Paso figures) and the seed's C++
-program (dhlab.course.ssrms_program), measured on the arm and on what the figures draw; and the notebook's
+"""Notebook 7's SSRMS step by step (dhlab.course.lessons.ssrms_steps, the Paso figures) and the seed's C++
+program (dhlab.course.lessons.ssrms_program), measured on the arm and on what the figures draw; and the notebook's
 order: Paso 0 → 3 before the table, the student's prediction before the figure that answers it, the C++
 keyboard material in an appendix at the end."""
 import json
@@ -14,11 +14,11 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 from dhlab import robots  # noqa: E402
-from dhlab.course import figures_ssrms  # noqa: E402
-from dhlab.course.exercises_dh import four_axis_arm  # noqa: E402
-from dhlab.course.exercises_dh_ssrms import printed_key_position  # noqa: E402
-from dhlab.course.ssrms_program import KEYS, SeedProgram  # noqa: E402
-from dhlab.course.ssrms_steps import frames_b, x_steps, z_axes  # noqa: E402
+from dhlab.course.lessons import figures_ssrms  # noqa: E402
+from dhlab.course.exercises import four_axis_arm  # noqa: E402
+from dhlab.course.exercises.ssrms import printed_key_position  # noqa: E402
+from dhlab.course.lessons.ssrms_program import KEYS, SeedProgram  # noqa: E402
+from dhlab.course.lessons.ssrms_steps import frames_b, x_steps, z_axes  # noqa: E402
 from dhlab.validation import DHLabError  # noqa: E402
 from test_course_figures import drawn, text_box, visible_texts  # noqa: E402
 

@@ -232,4 +232,7 @@ def test_dhlab_validation_error_keeps_its_name_and_every_check_stays_importable(
     import dhlab.validation as validation
     assert DHLabError.__module__ == "dhlab.validation" and validation.DHLabError is DHLabError
     assert all(hasattr(validation, name) for name in validation.__all__)
-    from dhlab.validation import _describe, _real, check_joint_values  # noqa: F401 (the old private names too)
+    from dhlab.errors import DHLabError as ground_error
+    from dhlab.units import Angle, has_angle_mark
+    from dhlab.validation.marks import Angle as marked, has_angle_mark as marks
+    assert ground_error is DHLabError and Angle is marked and has_angle_mark is marks

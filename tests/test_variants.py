@@ -6,10 +6,11 @@ import numpy as np
 import pytest
 
 from dhlab import DHLabError
-from dhlab.assign import dh_from_axes
-from dhlab.course.family import FAMILY, family_names
-from dhlab.course.family_model import build, dh_frames, physical_frames, random_valid_frames, rows_from_frames
-from dhlab.grading import variants as V
+from dhlab.assignment import variants as V
+from dhlab.assignment.family import FAMILY, family_names
+from dhlab.assignment.model import build, physical_frames, random_valid_frames, rows_from_frames
+from dhlab.assignment.reference import dh_frames
+from dhlab.dh_frames import dh_from_axes
 from test_family import assert_same_motion, random_q
 
 SECRET = b"the teacher's secret: 32 random bytes would be better"
@@ -20,7 +21,7 @@ CASES = [(key, seed) for key in family_names() for seed in SEEDS]
 @pytest.fixture(autouse=True)
 def _the_puma_again():
     """A test that runs a notebook's "Your robot" cell (use_variant) leaves the PUMA in place after it."""
-    from dhlab.course.family_notebook import clear_variant
+    from dhlab.assignment.notebook_cells import clear_variant
     yield
     clear_variant()
 
@@ -231,9 +232,8 @@ def test_load_secret(tmp_path):
 
 
 def test_use_variant_is_the_seam():
-    from dhlab.course.assignment import current_robot
-    from dhlab.course.family_notebook import active_robot, clear_variant, use_variant
-    from dhlab.grading import puma
+    from dhlab.assignment import reference as puma
+    from dhlab.assignment.notebook_cells import active_robot, clear_variant, current_robot, use_variant
     v = V.variant("cobra600", 2)
     try:
         robot = use_variant(v.to_dict(), student_id="ana")
@@ -249,7 +249,7 @@ def test_use_variant_is_the_seam():
 def test_the_graders_valid_frames_accept_the_reference_and_random_answers(key):
     """Integration seam: an AssignmentRobot works where the grader takes the PUMA reference
     (dhlab.grading.puma's valid-frame families and link fit)."""
-    from dhlab.grading import puma
+    from dhlab.assignment import valid_frames as puma
     if not all(hasattr(puma, f) for f in ("is_valid_frame", "fit_link")):
         pytest.skip("the grader's valid-frame functions changed")
     rng = np.random.default_rng(11)
@@ -281,7 +281,7 @@ def _namespace_from_rows(robot, rows, frames):
     """What a student writes in the notebook's answer cells: part 1 from the drawn axes
     (coincident axes: "parallel", case 2, as the notebook's three words say), part 2 the
     links in ``frames``, part 3 the rows (degrees) with q_i in θ_i, or in d_i for a sliding joint."""
-    from dhlab.course.assignment import Tx, Tz, joint_variables
+    from dhlab.assignment import Tx, Tz, joint_variables
     from dhlab.lines import relation
     q = joint_variables(robot.n)
     ns = {"n_links": robot.n + 1, "n_joints": robot.n, "joint_types": robot.kinds,
@@ -304,8 +304,8 @@ def _student_namespace(robot, frames):
 
 
 def _report(ns, robot):
-    from dhlab.grading import checks
-    from dhlab.grading.answers import answers_from_namespace
+    from dhlab.assignment import checks
+    from dhlab.assignment.answers import answers_from_namespace
     return checks.check_all(answers_from_namespace(ns, robot.n), ref=robot)
 
 
@@ -391,7 +391,7 @@ def _row_mistakes(robot, rows):
 
 def _other_mistakes(robot, ns):
     """Slips in parts 1 and 2 and in the chain: (part, what, the changed namespace)."""
-    from dhlab.grading import puma
+    from dhlab.assignment import valid_frames as puma
     wrong_word = {"intersect": "skew", "skew": "intersect", "parallel": "intersect"}
     yield "part1", "n_links", dict(ns, n_links=robot.n)
     yield "part1", "n_joints", dict(ns, n_joints=robot.n + 1)
@@ -427,8 +427,8 @@ def _lost(report) -> list:
 def _links_not_in_their_frames(robot, ns, frames) -> list:
     """The labels of the links drawn (in ``frames``) where the chain of ``ns``'s T_k does not put
     them at home (x_n turned by θ_n + 90°: the gripper): the ground truth of part 2."""
-    from dhlab.grading.answers import answers_from_namespace
-    from dhlab.grading.part3 import matrix
+    from dhlab.assignment.answers import answers_from_namespace
+    from dhlab.assignment.checks.analysis import matrix
     F, out = np.eye(4), []
     for k, row in enumerate(answers_from_namespace(ns, robot.n).T[:robot.n], start=1):
         F = F @ matrix(row)
@@ -480,8 +480,8 @@ def test_each_mistake_costs_exactly_its_item(key):
 def test_the_notebooks_own_checks_tables_and_figures_use_the_students_robot(key):
     """After the "Your robot" cell (use_variant), the notebook's check_part, tables, figures and
     teach panel are about that robot: its n, its axes, its name."""
-    from dhlab.course import assignment as A
-    from dhlab.course.family_notebook import use_variant
+    from dhlab.assignment import notebook as A
+    from dhlab.assignment.notebook_cells import use_variant
     v = V.variant(key, 5)
     robot = use_variant(v.to_dict(), student_id="ana")
     ns = _student_namespace(robot, robot.home_frames)

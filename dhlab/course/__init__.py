@@ -1,22 +1,21 @@
-"""The course's own content: the exercises checked in the notebooks and the assignment.
+"""The course's own content: what notebooks 1-7 and 9 import, besides the maths and the views.
 
-The feedback machinery, shared by every exercise:
+Three sub-packages, each importing only the ones above it in this list (and the layers below ``course``):
 
-- :mod:`~dhlab.course.feedback` — :class:`Feedback` and :class:`Exercise` (a check never raises)
-- :mod:`~dhlab.course.answers` — reading a student's answer into numbers or a matrix, or a clear refusal
-- :mod:`~dhlab.course.matrix_checks`, :mod:`~dhlab.course.value_checks`,
-  :mod:`~dhlab.course.word_checks` — checking a matrix, numbers and vectors, words
+- :mod:`dhlab.course.checks` — the checking machinery: :class:`~dhlab.course.checks.feedback.Feedback`
+  and :class:`~dhlab.course.checks.feedback.Exercise`, reading a student's answer (``reading``), the
+  judging ladder (``judge``), and the checks of a matrix (``matrix``), of numbers (``values``) and of
+  words (``words``, ``case_words``); ``options`` checks the teacher's arguments
+- :mod:`dhlab.course.exercises` — every exercise of the course in one registry: ``exercise("1.1")`` …
+  ``exercise("7.3")``, ``available()``; one module per notebook or subject (``basics``, ``homogeneous``,
+  ``first_robots``, ``pr_mechanism``, ``dh_rules``, ``dh_tables``, ``dh_links``, ``ssrms``, and
+  ``dh_common``, what the DH checks share)
+- :mod:`dhlab.course.lessons` — each notebook's helpers and figures (``lesson_*``, ``figures_*``,
+  ``dh_first_robot``, ``ssrms_steps``, ``ssrms_program``)
 
-The exercises:
+and :mod:`dhlab.course.predict` (notebooks 5 and 6: predict, then check, then reveal).
 
-- :mod:`~dhlab.course.exercises` — notebooks 1-4
-- :mod:`~dhlab.course.exercises_dh` — notebooks 5-7 (``exercises_dh_frames``, ``_rules``, ``_links``,
-  ``_ssrms``, ``_common``)
-
-The assignment:
-
-- :mod:`~dhlab.course.assignment` — what the PUMA assignment notebook imports
-- :mod:`~dhlab.course.family` — the family of assignment robots (PUMA 560 and six other arms), with
-  ``family_model`` (what the student is given), ``family_views`` (pictures, tables) and
-  ``family_notebook`` (a student's own robot in the notebook)
+Kept for notebooks already in use, one release: :mod:`dhlab.course.exercises_dh` (now
+:mod:`dhlab.course.exercises`), and :mod:`dhlab.course.assignment` and :mod:`dhlab.course.family_notebook`
+(the PUMA assignment is its own package, :mod:`dhlab.assignment`).
 """

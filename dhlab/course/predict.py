@@ -15,7 +15,7 @@ table or a figure that would give the answer away.
 The ready-made predictions of notebooks 5 and 6 are built by the functions below
 (:func:`row_prediction`, :func:`case_prediction`, :func:`step_prediction`,
 :func:`entry_prediction`, :func:`point_prediction`); they reuse the DH checkers of
-:mod:`dhlab.course.exercises_dh_rules`, so a row in modified DH (Craig) is recognised and named.
+:mod:`dhlab.course.exercises.dh_rules`, so a row in modified DH (Craig) is recognised and named.
 """
 from __future__ import annotations
 
@@ -24,14 +24,14 @@ import math
 import numpy as np
 import sympy as sp
 
-from ..dh import DHRobot, _parse
+from ..dh import DHRobot, parse_entry
 from ..i18n import _
 from ..transforms import Rx, Rz, trans
 from ..validation import DHLabError, as_index, as_text, describe
-from .answers import Refused, is_unanswered, to_vector
-from .exercises_dh_common import _num, _row_of, _vec, _wrong, axis_relation
-from .exercises_dh_rules import _read_case, _refutation, check_dh_row
-from .feedback import Feedback
+from .checks.feedback import Feedback
+from .checks.reading import Refused, is_unanswered, to_vector
+from .exercises.dh_common import axis_relation, number_text, row_at_zero, vector_text, wrong_answer
+from .exercises.dh_rules import check_dh_row, read_case, refutation
 
 __all__ = ["Prediction", "row_prediction", "check_row_prediction", "case_prediction", "step_prediction",
            "entry_prediction", "point_prediction", "reveal"]
@@ -106,7 +106,7 @@ def _at_pose(row, robot, i, q):
     values, variable_in = [], []
     for value, column in zip(row, "θdaα"):
         try:
-            entry = _parse(value, f"{column}", length=column in "da") if isinstance(value, str) else value
+            entry = parse_entry(value, f"{column}", length=column in "da") if isinstance(value, str) else value
         except DHLabError as error:
             return None, str(error)
         if isinstance(entry, sp.Basic):
@@ -143,7 +143,7 @@ def _row_text(robot, i):
 def row_prediction(robot, i, q=None) -> Prediction:
     """Predict row ``i`` (θ, d, a, α) of ``robot`` from its frames drawn at ``q`` (default q = 0):
     angles in degrees, the joint variable by name (e.g. ``"q1"``; numbers at that pose pass too).
-    Checked by :func:`~dhlab.course.exercises_dh_rules.check_dh_row` on {S_(i−1)}, {S_i} at ``q``."""
+    Checked by :func:`~dhlab.course.exercises.dh_rules.check_dh_row` on {S_(i−1)}, {S_i} at ``q``."""
     i = _robot_link(robot, i)
     q = robot.qz if q is None else q
     frames = robot.frames(q)[i - 1:i + 1]              # frames() checks q: a clear error if it is bad
@@ -152,7 +152,7 @@ def row_prediction(robot, i, q=None) -> Prediction:
     def checker(row):
         values, problem = _at_pose(row, robot, i, q)
         if problem:
-            return _wrong(_("your row {i}").format(i=i), [problem])
+            return wrong_answer(_("your row {i}").format(i=i), [problem])
         feedback = check_dh_row(values, frames=tuple(frames))
         feedback.title = feedback.title.replace(_("your row (θ, d, a, α)"),
                                                 _("your row {i} (θ, d, a, α)").format(i=i))
@@ -181,19 +181,19 @@ def case_prediction(z_prev, z_next, i: int = 1) -> Prediction:
     i = as_index(i, "i", 1, 99)
 
     def checker(answer):
-        said, problem = _read_case(answer)
+        said, problem = read_case(answer)
         name = _("your case of x{i}").format(i=i)
         if problem:
-            return _wrong(name, [problem])
+            return wrong_answer(name, [problem])
         if said == truth or (said == "coincident" and rel.kind == "coincident"):
             return Feedback("correct", _("correct: {name} is right.").format(name=name))
-        return _wrong(name, [_refutation(said, rel)])
+        return wrong_answer(name, [refutation(said, rel)])
 
     def worked():
         text = {1: _("z{p} and z{i} intersect: case 1, x{i} = ±(z{p} × z{i}), through the intersection point."),
                 2: _("z{p} and z{i} are parallel: case 2, x{i} on any common normal (length {length})."),
                 3: _("z{p} and z{i} are skew: case 3, x{i} on the unique common normal, of length {length}.")}
-        return text[number].format(p=i - 1, i=i, length=_num(rel.distance))
+        return text[number].format(p=i - 1, i=i, length=number_text(rel.distance))
 
     return Prediction(_("the case of x{i} (intersect, parallel or skew)").format(i=i), checker, worked)
 
@@ -201,7 +201,7 @@ def case_prediction(z_prev, z_next, i: int = 1) -> Prediction:
 # --- the step-through's moving frame --------------------------------------------------------------
 def _moving_frame(robot, i, step):
     """The moving frame, in {S_(i−1)}, after the first ``step`` motions of row i at q = 0."""
-    theta, d, a, alpha = _row_of(robot, i)
+    theta, d, a, alpha = row_at_zero(robot, i)
     motions = [Rz(math.radians(theta)), trans(0, 0, d), trans(a, 0, 0), Rx(math.radians(alpha))]
     T = np.eye(4)
     for M in motions[:step]:                 # the moving frame: each motion on the right
@@ -222,19 +222,19 @@ def step_prediction(robot, i, step) -> Prediction:
         try:
             mine = np.asarray(to_vector(answer, name, 3), dtype=float)
         except (Refused, TypeError, ValueError) as error:
-            return _wrong(name, [str(error)])
+            return wrong_answer(name, [str(error)])
         if np.allclose(mine, origin, atol=1e-3):
             return Feedback("correct", _("correct: {name} is right.").format(name=name))
         items = [_("{name} {mine} is not where the first {step} motion(s) of row {i} lead (in {{S_{p}}}: θ and d "
                    "move along and about z{p}, a along the turned x).").format(
-                       name=name, mine=_vec(mine), step=step, i=i, p=i - 1)]
+                       name=name, mine=vector_text(mine), step=step, i=i, p=i - 1)]
         if step >= 3 and np.allclose(mine, _moving_frame(robot, i, 2)[:3, 3], atol=1e-3):
             items.append(_("that is the origin after step 2: step 3 moves it by a along the turned x axis."))
-        return _wrong(name, items)
+        return wrong_answer(name, items)
 
     def worked():
         return _("after {motions} the origin is at {origin} and the x axis along {x} (in {{S_{p}}}).").format(
-            motions=STEP_NAMES[step], origin=_vec(origin), x=_vec(T[:3, 0]), p=i - 1)
+            motions=STEP_NAMES[step], origin=vector_text(origin), x=vector_text(T[:3, 0]), p=i - 1)
 
     question = _("the origin of the moving frame after step {step} of row {i}, in {{S_{p}}}").format(
         step=step, i=i, p=i - 1)
@@ -258,12 +258,12 @@ def entry_prediction(robot, i, row, col) -> Prediction:
             mine = mine.subs({s: names[str(s)] for s in mine.free_symbols if str(s) in names})
             same = sp.simplify(sp.expand_trig(mine - truth)) == 0
         except (sp.SympifyError, SyntaxError, TypeError, ValueError, AttributeError):
-            return _wrong(name, [_("cannot read {got} as an expression such as sp.cos(q1) or 0.").format(
+            return wrong_answer(name, [_("cannot read {got} as an expression such as sp.cos(q1) or 0.").format(
                 got=describe(answer))])
         if same:
             return Feedback("correct", _("correct: {name} is right.").format(name=name))
-        return _wrong(name, [_("compare with the closed form of rule 14, with this row's θ, d, a, α "
-                               "put in (cos and sin of a constant angle are numbers).")])
+        return wrong_answer(name, [_("compare with the closed form of rule 14, with this row's θ, d, a, α "
+                                     "put in (cos and sin of a constant angle are numbers).")])
 
     return Prediction(where, checker, lambda: f"{where} = {sp.sstr(truth)}.")
 
@@ -286,10 +286,11 @@ def point_prediction(question: str, expected, why: str, tol: float = 1e-3) -> Pr
         try:
             mine = np.asarray(to_vector(answer, name, 3), dtype=float)
         except (Refused, TypeError, ValueError) as error:
-            return _wrong(name, [str(error)])
+            return wrong_answer(name, [str(error)])
         if np.allclose(mine, expected, atol=tol):
             return Feedback("correct", _("correct: {name} is right.").format(name=name))
         off = [c for c, m, e in zip("xyz", mine, expected) if abs(m - e) > tol]
-        return _wrong(name, [_("your point {mine} is off in {axes}.").format(mine=_vec(mine), axes=", ".join(off))])
+        return wrong_answer(name, [_("your point {mine} is off in {axes}.").format(mine=vector_text(mine),
+                                                                                  axes=", ".join(off))])
 
-    return Prediction(question, checker, lambda: f"{_vec(expected)}: {why}")
+    return Prediction(question, checker, lambda: f"{vector_text(expected)}: {why}")

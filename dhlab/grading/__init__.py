@@ -21,8 +21,9 @@
   command line, each student's for the feedback: ``--language``, ``DHLAB_LANGUAGE``) and
   :mod:`dhlab.grading.release_language` — each released notebook in its student's language (a roster
   column ``language``/``idioma``), the Spanish text from the Spanish edition's catalog of notebook 8;
-* :mod:`dhlab.grading.generate` — the student notebook from the source notebook
-  (package data: ``dhlab/grading/data/08_puma_assignment.ipynb``);
+* :mod:`dhlab.grading.generate` — the student notebook from the teacher's source notebook (with the
+  solutions: not in the package, but ``tools/teacher/08_puma_assignment.ipynb`` of the course's repository,
+  or ``--source``); the student notebook is package data (``dhlab/grading/template/``, dhlab-assign's start);
 * :mod:`dhlab.grading.selfcheck` — one kernel started as the submissions' will be, before any runs;
   :mod:`dhlab.grading.cleanup` — ``dhlab-grade --clean``, what a killed grader left;
 * where teachers already grade (``dhlab-grade export``, :mod:`dhlab.grading.export`):

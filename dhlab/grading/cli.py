@@ -81,7 +81,7 @@ import threading
 import time
 from pathlib import Path
 
-from .language import _
+from ..i18n import _
 from .launch import Stopped, allow_runs, run_submission, stop_all
 from .progress import Progress, _summary
 from .rows import _error_row, grade_submission
@@ -246,7 +246,7 @@ def grade(argv) -> int:
     """``dhlab-grade puma SUBMISSIONS -o gradebook.csv …`` (see the module), in the teacher's language
     (``--language``, else ``DHLAB_LANGUAGE``, else English): its help, messages, statuses and summary;
     each feedback file is in its student's language (:mod:`dhlab.grading.rows`)."""
-    from .language import as_teacher
+    from ..i18n import as_teacher
     return as_teacher("dhlab-grade", argv, _grade)
 
 
@@ -285,6 +285,10 @@ def _parse_and_grade(argv, interrupts) -> int:
                                "submission is graded against its student's own robot (without it: the PUMA 560)"))
     parser.add_argument("--release", type=Path, default=None,
                         help=_("the folder 'dhlab-assign release' wrote (its _teacher/ holds the roster's variants)"))
+    # not installed with dhlab (students install it too): the self-check grades it before anyone
+    parser.add_argument("--source", type=Path, default=None,
+                        help="the teacher's solution notebook, graded first as a self-check (default: "
+                             "tools/teacher/08_puma_assignment.ipynb of the course's repository, when run from it)")
     parser.add_argument("--fallback", choices=("roster", "none"), default=None,
                         help=_("a missing, tampered or classmate's variant: grade against the roster's variant for "
                                "the student (roster, the default with --release) or give no marks (none)"))
@@ -343,7 +347,8 @@ def _cannot_write(output: Path) -> str:
 
 def _run_batch(argv, options, folder, paths, feedback_dir, resolve, interrupts) -> int:
     """Stage, check the grader, grade every submission, and say what happened (exit code)."""
-    from . import checks, grade_variants  # noqa: F401  (imported before any student code runs)
+    from ..assignment import checks  # noqa: F401  (imported before any student code runs)
+    from . import grade_variants  # noqa: F401
     from .gradebook import assignment_cells, read_csv
     from .isolation import file_digests, setup
     from . import cleanup, selfcheck

@@ -17,7 +17,7 @@ import tempfile
 from pathlib import Path
 
 from ..validation import DHLabError
-from .language import _, as_teacher
+from ..i18n import _, as_teacher
 
 __all__ = ["main"]
 
@@ -36,6 +36,9 @@ def _parser() -> argparse.ArgumentParser:
                     help=_("seconds per notebook (default 4 × --timeout)"))
     gs.add_argument("--memory-mb", type=float, default=2048)
     gs.add_argument("--isolation", choices=("auto", "user", "none"), default="auto")
+    gs.add_argument("--source", type=Path, default=None,
+                    help="the teacher's solution notebook, which the autograder grades first as a self-check "
+                         "(default: tools/teacher/08_puma_assignment.ipynb of the course's repository, when run from it)")
     tr = sub.add_parser("try-gradescope", help=_("run an autograder.zip here, as Gradescope would"))
     tr.add_argument("zip", type=Path)
     tr.add_argument("notebook", type=Path)
@@ -152,7 +155,7 @@ def _main(argv) -> int:
         if args.target == "gradescope":
             from .gradescope import export
             out = export(args.output, args.secret_file, args.release, args.fallback, args.timeout,
-                         args.total_timeout, args.memory_mb, isolation=args.isolation)
+                         args.total_timeout, args.memory_mb, isolation=args.isolation, source=args.source)
             print(_("dhlab-grade export: {file} (upload it to Gradescope as the autograder; never to students)").format(
                 file=out), file=sys.stderr)
             return 0

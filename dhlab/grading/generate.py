@@ -1,13 +1,18 @@
 """Make the student notebook from the source (solutions) notebook, the way nbgrader does.
 
-    python -m dhlab.grading.generate                      # the course's source -> notebooks/08_…
+    python -m dhlab.grading.generate                      # in the course's repository: see below
     python -m dhlab.grading.generate SOURCE -o STUDENT
     python -m dhlab.grading.generate --check              # exit 1 if the student notebook is out of date
 
-The course's source (solutions) notebook is package data, ``dhlab/grading/data/
-08_puma_assignment.ipynb``: outside ``notebooks/``, so students never see it in
-the course's file browser (``make lab``). Teachers open it from there (or copy it
-into their nbgrader course).
+**The teacher's source notebook, with the solutions, is not in the package** (students install
+it): it is ``tools/teacher/08_puma_assignment.ipynb`` in the course's repository, outside
+``notebooks/``, so students never see it in the course's file browser either (``make lab``).
+Run from that repository (its top folder or below), the defaults are the course's own files
+(:func:`checkout`): the source is that notebook, and the student notebook is written twice, as
+``notebooks/08_puma_assignment.ipynb`` and as ``dhlab/grading/template/08_puma_assignment.ipynb``
+(:data:`TEMPLATE`, package data: what ``dhlab-assign`` starts from). Elsewhere name the source
+(``SOURCE``, or ``--source`` of ``dhlab-grade``, whose self-check runs it): :func:`find_source`
+says where to get it when it is missing.
 
 The source notebook is marked exactly as for nbgrader, so a teacher who uses
 nbgrader can drop it into ``source/<assignment>/`` and run ``nbgrader
@@ -50,9 +55,11 @@ import re
 import sys
 from pathlib import Path
 
-__all__ = ["CODE_STUB", "TEXT_STUB", "GenerateError", "clear_solutions", "remove_hidden_tests",
+from ..errors import DHLabError
+
+__all__ = ["CODE_STUB", "TEXT_STUB", "GenerateError", "SourceMissing", "clear_solutions", "remove_hidden_tests",
            "check_metadata", "student_cell", "student_notebook", "generate", "main",
-           "SOURCE", "STUDENT"]
+           "NOTEBOOK", "TEMPLATE", "CHECKOUT_SOURCE", "CHECKOUT_STUDENTS", "checkout", "find_source"]
 
 CODE_STUB = "# YOUR CODE HERE"
 TEXT_STUB = "YOUR ANSWER HERE"
@@ -64,13 +71,46 @@ SHOWN = ("robot_figure", "axes_table", "points_table")
 NBGRADER_KEYS = {"grade", "solution", "locked", "task", "grade_id", "points", "schema_version",
                  "checksum", "cell_type"}
 
-_ROOT = Path(__file__).resolve().parents[2]
-SOURCE = Path(__file__).resolve().with_name("data") / "08_puma_assignment.ipynb"
-STUDENT = _ROOT / "notebooks" / "08_puma_assignment.ipynb"
+NOTEBOOK = "08_puma_assignment.ipynb"
+# the student notebook, shipped with the package (generated; equal to the course's notebooks/08_…)
+TEMPLATE = Path(__file__).resolve().with_name("template") / NOTEBOOK
+# in the course's repository, from its top folder: the teacher's source notebook (with the solutions)
+# and where the student notebook made from it goes (the course's notebook, the package's copy)
+CHECKOUT_SOURCE = Path("tools") / "teacher" / NOTEBOOK
+CHECKOUT_STUDENTS = (Path("notebooks") / NOTEBOOK, Path("dhlab") / "grading" / "template" / NOTEBOOK)
+WHERE_TO_GET = ("The teacher's source notebook (the assignment with its solutions) is not installed with dhlab, "
+                "so that students never get it: it is {path} in the course's repository. Run this from a clone "
+                "of the repository (git clone the course, then run from its folder), or give its path "
+                "(dhlab-grade … --source PATH; python -m dhlab.grading.generate PATH -o STUDENT.ipynb): a "
+                "teacher may keep a copy anywhere students cannot read it.")
 
 
 class GenerateError(ValueError):
     """The source notebook is not marked up the way nbgrader expects."""
+
+
+class SourceMissing(DHLabError):
+    """The teacher's source notebook cannot be found (the message says where to get it)."""
+
+
+def checkout(start=None):
+    """The top folder of the course's repository that holds ``start`` (default: the current folder),
+    found by its teacher's notebook (:data:`CHECKOUT_SOURCE`); None outside a checkout."""
+    here = Path(start if start is not None else Path.cwd()).resolve()
+    return next((folder for folder in (here, *here.parents) if (folder / CHECKOUT_SOURCE).is_file()), None)
+
+
+def find_source(path=None) -> Path:
+    """The teacher's source notebook: ``path`` when given, else the checkout's (run from the course's
+    repository); :class:`SourceMissing`, saying where to get it, when there is none."""
+    if path is not None:
+        if not Path(path).is_file():
+            raise SourceMissing(f"no notebook at {str(path)!r}. " + WHERE_TO_GET.format(path=CHECKOUT_SOURCE))
+        return Path(path)
+    top = checkout()
+    if top is None:
+        raise SourceMissing(WHERE_TO_GET.format(path=CHECKOUT_SOURCE))
+    return top / CHECKOUT_SOURCE
 
 
 def _source(cell) -> str:
@@ -187,7 +227,7 @@ def _dumps(nb: dict) -> str:
     return nbformat.writes(nbformat.from_dict(nb))
 
 
-def generate(source=SOURCE, student=STUDENT, check: bool = False) -> bool:
+def generate(source, student, check: bool = False) -> bool:
     """Write the student notebook (or, with ``check``, only compare). True if it is up to date."""
     nb = json.loads(Path(source).read_text(encoding="utf-8"))
     text = _dumps(student_notebook(nb))
@@ -202,25 +242,35 @@ def generate(source=SOURCE, student=STUDENT, check: bool = False) -> bool:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("source", nargs="?", type=Path, default=SOURCE)
+    parser.add_argument("source", nargs="?", type=Path, default=None,
+                        help=f"the teacher's source notebook (default: {CHECKOUT_SOURCE} of the course's "
+                             "repository, when run from it)")
     parser.add_argument("-o", "--output", type=Path, default=None,
-                        help="the student notebook (default: notebooks/08_puma_assignment.ipynb for the "
-                             "course's source; required for any other source)")
+                        help="the student notebook (default, for the course's source: "
+                             f"{' and '.join(map(str, CHECKOUT_STUDENTS))}; required for any other source)")
     parser.add_argument("--check", action="store_true", help="only check that the student notebook is up to date")
     args = parser.parse_args(argv)
-    if args.output is None and args.source.resolve() != SOURCE:
+    top = checkout() if args.source is None else None
+    if args.output is None and top is None:
+        if args.source is None:
+            print(f"generate: {WHERE_TO_GET.format(path=CHECKOUT_SOURCE)}", file=sys.stderr)
+            return 2
         parser.error("give -o STUDENT.ipynb for a source other than the course's")
-    output = args.output or STUDENT
-    try:
-        ok = generate(args.source, output, check=args.check)
-    except GenerateError as e:
-        print(f"{args.source}: {e}", file=sys.stderr)
-        return 2
-    if args.check and not ok:
-        print(f"{output} is out of date: run python -m dhlab.grading.generate", file=sys.stderr)
-        return 1
-    print(f"{output} {'is up to date' if args.check else 'written'}")
-    return 0
+    source = args.source or top / CHECKOUT_SOURCE
+    outputs = [args.output] if args.output else [top / path for path in CHECKOUT_STUDENTS]
+    failed = 0
+    for output in outputs:
+        try:
+            ok = generate(source, output, check=args.check)
+        except GenerateError as e:
+            print(f"{source}: {e}", file=sys.stderr)
+            return 2
+        if args.check and not ok:
+            print(f"{output} is out of date: run python -m dhlab.grading.generate", file=sys.stderr)
+            failed = 1
+        else:
+            print(f"{output} {'is up to date' if args.check else 'written'}")
+    return failed
 
 
 if __name__ == "__main__":

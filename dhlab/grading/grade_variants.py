@@ -39,10 +39,10 @@ import unicodedata
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
+from ..assignment import variants as V
 from ..validation import DHLabError
-from . import variants as V
 from .csvsafe import restored
-from .language import N_, _
+from ..i18n import N_, _
 
 __all__ = ["COLUMNS", "VariantSetup", "VariantInfo", "setup", "identify", "resolve", "columns", "status_note",
            "feedback_lines", "FALLBACKS"]
@@ -179,7 +179,7 @@ def _roster_id(vs: VariantSetup, name: str) -> str | None:
 def resolve(vs: VariantSetup, nb, rel_path) -> tuple:
     """(the notebook to run or None, :class:`VariantInfo`) for the submitted notebook ``nb``
     (a dict) at ``rel_path``. None: the submission is not run (no variant to grade it against)."""
-    from ..course.family_notebook import prepare_submission
+    from ..assignment.notebook_cells import prepare_submission
     student, how = identify(vs, rel_path)
     record = nb.get("metadata", {}).get(V.METADATA_KEY) if isinstance(nb, dict) else None
     claimed = record.get("student_id") if isinstance(record, dict) else None

@@ -28,7 +28,7 @@ import tempfile
 import unicodedata
 from pathlib import Path
 
-from .language import N_, _
+from ..i18n import N_, _
 
 __all__ = ["COLUMNS", "VARIANT_COLUMNS", "PART_COLUMNS", "GRADE_AGAIN", "REMOVED", "write_atomic", "write_csv", "read_csv",
            "feedback_filename", "Cells", "error_text", "cell_error", "status_text", "feedback_text",
@@ -171,10 +171,10 @@ def assignment_cells() -> tuple:
     """(the code of every locked cell of the assignment, as handed out or released with a personal
     robot; the first line of the released "Your robot" cell, which the grader rewrites; the part
     of each answer cell's first line, e.g. '# Part 2: write link_points below: …')."""
-    from ..course.family_notebook import SEAM_CELL_ID, release_notebook
-    from . import variants
-    from .generate import SOURCE, student_notebook
-    handed_out = student_notebook(json.loads(SOURCE.read_text(encoding="utf-8")))
+    from ..assignment import variants
+    from ..assignment.notebook_cells import SEAM_CELL_ID, release_notebook
+    from .generate import TEMPLATE
+    handed_out = json.loads(TEMPLATE.read_text(encoding="utf-8"))     # the student notebook, package data
     cells = list(handed_out["cells"])
     for family in variants.family_names():        # each robot's release says its own joints (setup cell)
         record = {"variant": variants.variant(family, "any").to_dict(), "student_id": "any"}
@@ -321,7 +321,7 @@ def feedback_text(submission: str, run: dict, report, status: str, robot_lines=(
         head = (_("How your notebook ran (cells counted from the top, code cells only):") if cells is not None
                 else _("How your notebook ran:"))
         lines += [head, *[f"  - {d}" for d in details], ""]
-    from .variants import shown_name
+    from ..assignment.family import shown_name
 
     robot = (_("your {robot}").format(robot=shown_name(report.robot)) if report.robot != "PUMA 560" else _("the PUMA 560"))
     lines.append(_("Your answers were read from the variables n_links, n_joints, joint_types, x_cases, link_points, "

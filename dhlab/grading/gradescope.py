@@ -16,9 +16,10 @@ grading uses the same layout):
 
 What the zip holds (:func:`export`): a wheel of the installed dhlab (made here, offline, from
 the package's own files: :mod:`dhlab.grading.wheel`), ``setup.sh`` (installs it, with the kernel
-the grader starts), ``run_autograder``, the grading options (``dhlab_autograder.json``) and, for
-personal variants, the teacher's secret and ``release/_teacher/`` (the roster's variants). The
-zip goes to Gradescope only, never to a student.
+the grader starts), ``run_autograder``, the grading options (``dhlab_autograder.json``), the teacher's
+solution (``solution.ipynb``, for the self-check: the wheel, like every installed dhlab, does not hold
+it) and, for personal variants, the teacher's secret and ``release/_teacher/`` (the roster's variants).
+The zip goes to Gradescope only, never to a student.
 
 What ``run_autograder`` does (:func:`run`): the same steps as ``dhlab-grade puma`` for one
 submission — staging, the self-check (:mod:`dhlab.grading.selfcheck`), the sandboxed runner,
@@ -57,6 +58,7 @@ __all__ = ["export", "run", "results", "main", "ROOT_ENV", "CONFIG", "VISIBILITI
 ROOT_ENV = "DHLAB_AUTOGRADER_ROOT"
 CONFIG = "dhlab_autograder.json"
 SECRET = "secret.key"
+SOLUTION = "solution.ipynb"          # the teacher's solution, for the self-check; deleted once it has run
 TEACHER = Path("release") / "_teacher"
 _SCORE_LINE = re.compile(r"(.* assignment|Tarea .*): [0-9.]+/[0-9]+ (points|puntos)")   # English or Spanish
 _NOT_ISOLATED = re.compile(r" \(not isolated: [^\n]*\)$", re.M)
@@ -98,10 +100,13 @@ class AutograderError(Exception):
 # --- the zip ------------------------------------------------------------------------------------------
 
 def export(out, secret_file=None, release=None, fallback=None, timeout: float = 30, total_timeout: float | None = None,
-           memory_mb: float = 2048, output_mb: float = 10, isolation: str = "auto") -> Path:
-    """Write ``autograder.zip`` (see the module). ``secret_file`` (+ ``release``): personal variants."""
+           memory_mb: float = 2048, output_mb: float = 10, isolation: str = "auto", source=None) -> Path:
+    """Write ``autograder.zip`` (see the module). ``secret_file`` (+ ``release``): personal variants;
+    ``source``: the teacher's solution (default: the course checkout's, :func:`~dhlab.grading.generate.find_source`)."""
     from ..validation import DHLabError
+    from .generate import find_source
     from .wheel import build_wheel
+    solution = find_source(source).read_bytes()
     variants = secret_file is not None
     if release is not None and not variants:
         raise DHLabError("--release grades personal variants: give --secret-file too (the secret the notebooks "
@@ -129,6 +134,7 @@ def export(out, secret_file=None, release=None, fallback=None, timeout: float = 
             _add(z, "run_autograder", RUN_AUTOGRADER, executable=True)
             _add(z, CONFIG, json.dumps(config, indent=1) + "\n")
             z.write(wheel, wheel.name)
+            _add(z, SOLUTION, solution, private=True)
             if variants:
                 _add(z, SECRET, Path(secret_file).read_bytes(), private=True)
                 for name in ("variants.json", "manifest.csv"):
@@ -185,7 +191,8 @@ def _student(metadata: dict, vs) -> str:
 
 def _grade(root: Path, config: dict) -> dict:
     """The results of the submission under ``root`` (raises :class:`AutograderError`)."""
-    from . import checks, grade_variants as GV, selfcheck
+    from ..assignment import checks
+    from . import grade_variants as GV, selfcheck
     from .rows import grade_submission
     from .isolation import setup
     from .staging import stage
@@ -221,10 +228,13 @@ def _grade(root: Path, config: dict) -> dict:
         print(f"dhlab autograder: {iso.note() or 'the kernel runs as ' + iso.users[0][0]}", flush=True)
         if os.geteuid() == 0 and iso.mode != "user":
             raise AutograderError(ROOT_KERNEL.format(why=iso.why))
+        options.source = source / SOLUTION
         try:
             selfcheck.check(iso, options)
         except selfcheck.SelfCheckError as e:
             raise AutograderError(str(e)) from None
+        finally:
+            options.source.unlink(missing_ok=True)         # the solution, before any student code runs
         row = grade_submission(staged, options, iso)
     finally:
         shutil.rmtree(into, ignore_errors=True)
@@ -239,9 +249,9 @@ def _grade(root: Path, config: dict) -> dict:
 def results(row: dict) -> dict:
     """Gradescope's results.json for one gradebook row of :func:`dhlab.grading.rows.grade_submission`:
     one test per part (its feedback as output), the rest of the feedback as the top-level output."""
-    from .checks import POINTS, TITLES
+    from ..assignment.checks import POINTS, TITLES
     from .gradebook import PART_COLUMNS
-    from .language import _, current_language, speaking
+    from ..i18n import _, current_language, speaking
     parts = row.get("_part_text", {})
     header = row["_feedback_text"]
     for text in parts.values():

@@ -20,7 +20,7 @@ import re
 from pathlib import Path
 
 try:
-    from .language import _
+    from ..i18n import _
 except ImportError:          # loaded as a plain script by the runner: its messages stay English there
     def _(message: str) -> str:
         return message

@@ -8,7 +8,7 @@ from __future__ import annotations
 import sys
 import time
 
-from .language import N_, _
+from ..i18n import N_, _
 
 __all__ = ["Progress", "STATUS_KINDS"]
 

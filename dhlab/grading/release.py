@@ -9,7 +9,8 @@ For every row of the roster (a CSV file with a header; the id column is ``id``,
 ``id_estudiante``, ``estudiante``, ``usuario``… (:data:`ID_COLUMNS`) — or the one ``--id-column``
 names) it draws the student's variant (:func:`dhlab.grading.variants.roster_variants`), signs
 it with the teacher's secret, and writes ``release/<id>.ipynb``: the generated student
-notebook (``notebooks/08_puma_assignment.ipynb``) with a "Your robot" section — the
+notebook (:data:`TEMPLATE`, shipped with the package: the course's ``notebooks/08_puma_assignment.ipynb``;
+``--template`` names another) with a "Your robot" section — the
 robot's figure (drawn when the student runs the cell; stored in the notebook with
 ``--figures``), its axes table and the points table — and the signed record in the
 notebook's metadata (``metadata["dhlab"]``). The same roster and secret always give
@@ -51,18 +52,18 @@ import sys
 import unicodedata
 from pathlib import Path, PurePosixPath
 
-from ..course.family_notebook import SEAM_CELL_ID, prepare_submission, release_notebook, seam_source
+from ..assignment import variants as V
+from ..assignment.notebook_cells import SEAM_CELL_ID, prepare_submission, release_notebook, seam_source
 from ..validation import DHLabError
-from . import variants as V
-from .language import _, language_option
+from . import generate
+from ..i18n import _, language_option
 from .release_language import default_language, in_language, in_spanish, mark_language, roster_languages
 
 __all__ = ["read_roster", "checked_id", "look_alikes", "previous_release", "safe_filename", "release_notebook", "release", "main", "TEMPLATE",
            "ID_COLUMNS", "SEAM_CELL_ID", "DEFAULT_SECRET_FILE", "seam_source", "load_teacher_records",
            "submission_variant", "prepare_submission"]
 
-_ROOT = Path(__file__).resolve().parents[2]
-TEMPLATE = _ROOT / "notebooks" / "08_puma_assignment.ipynb"
+TEMPLATE = generate.TEMPLATE          # the student notebook, package data (no solutions in it)
 ID_COLUMNS = ("id", "student_id", "student", "username", "login",
               "identificador", "id_estudiante", "id estudiante", "estudiante", "usuario", "nombre de usuario",
               "id number", "número de id")
@@ -226,15 +227,8 @@ def _reserved(name: str) -> bool:
 # --- the notebook ------------------------------------------------------------------------------------
 
 def _load_template(path) -> dict:
-    """The student notebook to start from; without a course checkout (an installed dhlab), the
-    default is generated from the teacher's source notebook shipped with the package."""
+    """The student notebook to start from (the package's :data:`TEMPLATE` by default)."""
     path = Path(path)
-    if path == TEMPLATE and not path.exists():
-        from . import generate
-        try:
-            return generate.student_notebook(json.loads(Path(generate.SOURCE).read_text(encoding="utf-8")))
-        except (OSError, AttributeError, ValueError):
-            pass                                        # fall through to the clear error below
     try:
         return json.loads(path.read_text(encoding="utf-8"))
     except OSError as exc:

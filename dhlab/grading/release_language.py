@@ -6,8 +6,9 @@ may mix; without either, the ``DHLAB_LANGUAGE`` environment variable, else Engli
 
 A Spanish notebook is the English one, released for the student as always
 (:func:`dhlab.course.family_notebook.release_notebook`), with its markdown replaced cell by cell
-by the Spanish edition's translation (``dhlab/locale/es/notebooks/08_puma_assignment.po``, keyed
-by cell id: the catalog :mod:`dhlab.course.edition` builds ``notebooks/es/`` from). What the
+by the Spanish edition's translation (:data:`SPANISH_TEXTS`, keyed by cell id: the translations of
+the catalog ``notebooks/es/`` is built from, written into the package by the repository's
+``python -m tools.edition build``). What the
 variant changes in the English text (the robot's name, its number of joints, T1…Tn, "Your
 robot") is changed the same way in the Spanish text (:func:`own_robot_text_es`); the "Your
 robot" section itself is written by :func:`~dhlab.course.family_notebook.release_notebook`, run
@@ -20,18 +21,21 @@ from __future__ import annotations
 import contextlib
 import json
 import re
+from pathlib import Path
 
-from ..course.family_notebook import apply_rules, formula_rules
+from ..assignment import variants as V
+from ..assignment.notebook_cells import apply_rules, formula_rules
 from ..i18n import LANGUAGES, set_language
-from .language import _, checked_language, default_language, speaking  # noqa: F401  (part of this module's API)
-from . import variants as V
+from ..i18n import _, checked_language, default_language, speaking  # noqa: F401  (part of this module's API)
 
 __all__ = ["LANGUAGE_COLUMNS", "checked_language", "roster_languages", "in_language", "spanish_texts",
            "in_spanish", "mark_language", "notebook_language", "raw_notebook_language", "default_language",
-           "own_robot_text_es"]
+           "own_robot_text_es", "SPANISH_TEXTS"]
 
 LANGUAGE_COLUMNS = ("language", "idioma", "lang")
 STEM = "08_puma_assignment"
+# the Spanish edition's text of the assignment, cell id -> {"en": English source, "es": its translation}
+SPANISH_TEXTS = Path(__file__).resolve().with_name("template") / f"{STEM}.es.json"
 INTRO_CELL_ID = "dhlab-your-robot-intro"   # release_notebook's "Your robot" cell, when the template has no "## The robot"
 SET_LANGUAGE = re.compile(r'dhlab\.set_language\(\s*["\'](\w+)["\']\s*\)')
 
@@ -64,19 +68,17 @@ def in_language(language: str):
 
 def spanish_texts(template: dict) -> dict:
     """cell id -> the Spanish text of each markdown cell of the English ``template`` that the
-    catalog translates (a cell it does not know, e.g. of a teacher's own template, is left out)."""
-    from ..course.edition import Edition
-    from ..course.edition_catalog import translations
-    catalog = Edition().catalog(STEM)
-    if catalog is None:
+    catalog translates (a cell it does not know, or whose English differs, e.g. of a teacher's own
+    template, is left out)."""
+    try:
+        known = json.loads(SPANISH_TEXTS.read_text(encoding="utf-8"))["cells"]
+    except (OSError, ValueError, KeyError):
         return {}
-    spanish = translations(catalog)
     found = {}
     for cell in template.get("cells", []):
-        english = _source(cell)
-        message = catalog.get(english, context=cell.get("id")) if cell.get("cell_type") == "markdown" else None
-        if message is not None and message.string and not message.fuzzy:
-            found[cell["id"]] = spanish[cell["id"]]
+        entry = known.get(cell.get("id")) if cell.get("cell_type") == "markdown" else None
+        if entry is not None and entry["en"] == _source(cell):
+            found[cell["id"]] = entry["es"]
     return found
 
 
@@ -112,7 +114,7 @@ def own_robot_text_es(text: str, robot, name: str) -> str:
 def in_spanish(released: dict, template: dict, record: dict, notes: set) -> dict:
     """The English released notebook ``released`` (made from ``template`` for ``record``) in
     Spanish: each markdown cell from the catalog, changed as the variant changed the English."""
-    from ..course.family import spec
+    from ..assignment.family import spec
     robot = V.robot_of_variant(V.Variant.from_dict(record["variant"]))
     name = spec(record["variant"]["family"]).name
     spanish = spanish_texts(template)

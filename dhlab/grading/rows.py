@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import time
 
-from .language import N_, _, current_language, speaking
+from ..i18n import N_, _, current_language, speaking
 from .launch import run_submission
 
 __all__ = ["grade_submission"]
@@ -24,9 +24,9 @@ __all__ = ["grade_submission"]
 def grade_submission(staged, options, iso=None) -> dict:
     """Run, read the answers, score in this process: one gradebook row (+ feedback text).
     With variants (``staged.variant``), against that student's robot."""
-    from . import checks
+    from ..assignment import checks
+    from ..assignment.answers import N_JOINTS, Answers, Unreadable, parse_json
     from . import grade_variants as GV
-    from .answers import N_JOINTS, Answers, Unreadable, parse_json
     from .gradebook import PART_COLUMNS, feedback_filename, feedback_text, status_text
 
     started = time.monotonic()
@@ -130,7 +130,7 @@ def _grader_fault(staged, run: dict, cells, options, answers, robot) -> str:
     ours = _assignment_cell_stopped(run, cells)
     if ours is None:
         return ""
-    from .checks import check_all
+    from ..assignment.checks import check_all
     report = check_all(answers, ref=robot)
     if report.score >= report.max_score:          # nothing was lost: the marks stand
         return ""
@@ -206,7 +206,7 @@ def _mark_unread(report, run, cells) -> None:
 def _not_graded_row(staged, info) -> dict:
     """The row of a submission with no variant to grade it against (not run: no marks)."""
     from . import grade_variants as GV
-    from .checks import POINTS
+    from ..assignment.checks import POINTS
     from .gradebook import PART_COLUMNS, feedback_filename
     status = GV.status_note(info)
     row = {"submission": staged.submission, "score": "0", "max_score": sum(POINTS.values()), "status": status,
@@ -231,7 +231,7 @@ def _grader_error_row(staged, run: dict) -> dict:
     """Not graded, because the grader failed: the score and the parts are left empty (a 0 would
     read as the student's), the feedback says so, and ``--resume`` grades it again."""
     from . import grade_variants as GV
-    from .checks import POINTS
+    from ..assignment.checks import POINTS
     from .gradebook import PART_COLUMNS, feedback_filename, not_graded_feedback, status_text
 
     def status_now():

@@ -23,7 +23,7 @@ What it does, and why:
    interrupted, or a cell prints more than ``--output-mb``, a new kernel runs the
    notebook again without that cell. All of it within ``--total-timeout`` seconds.
 4. Asks the kernel to write the values of the answer names as JSON (the source of
-   :func:`dhlab.grading.answers.to_plain` is sent in, so a notebook that changed
+   :func:`dhlab.assignment.encode.to_plain` is sent in, so a notebook that changed
    ``dhlab`` cannot change how its answers are read), and reads that file — never
    anything the notebook printed.
 5. Writes what happened and the answers' JSON text to ``RESULT.json``. It scores
@@ -48,13 +48,14 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 try:
-    from .answers import ANSWER_NAMES, MAX_JSON_BYTES, encode_json, to_plain
+    from ..assignment.encode import ANSWER_NAMES, MAX_JSON_BYTES, encode_json, to_plain
     from .notebook_code import (MAX_CODE_BYTES, MAX_NOTEBOOK_BYTES, NotebookError,  # noqa: F401 (API)
                                 read_code_cells, scan_for_tampering)
     from .sandbox import MAX_PROCESSES, OUTPUT_LIMIT_NOTE, apply_limits
     from . import cgroups
-except ImportError:      # started as a script by the grader (see RUNNER below)
-    from answers import ANSWER_NAMES, MAX_JSON_BYTES, encode_json, to_plain
+except ImportError:      # started as a script by the grader (see RUNNER below): this folder is sys.path[0]
+    sys.path.append(str(Path(__file__).resolve().parents[1] / "assignment"))      # for encode.py alone
+    from encode import ANSWER_NAMES, MAX_JSON_BYTES, encode_json, to_plain
     from notebook_code import (MAX_CODE_BYTES, MAX_NOTEBOOK_BYTES, NotebookError,  # noqa: F401 (API)
                                read_code_cells, scan_for_tampering)
     from sandbox import MAX_PROCESSES, OUTPUT_LIMIT_NOTE, apply_limits
@@ -66,7 +67,7 @@ __all__ = ["RunResult", "run_notebook", "read_code_cells", "scan_for_tampering",
 # The grader starts this file, and the kernel's launcher, as scripts (python .../runner.py),
 # not with -m: so these processes do not import the whole dhlab package (numpy, sympy, ...).
 # That saves half a second per submission, and the only dhlab files they read from disk are
-# the four of this folder (answers.py, notebook_code.py, runner.py, sandbox.py); the grader checks the whole package unchanged.
+# runner.py, notebook_code.py, sandbox.py, cgroups.py and ../assignment/encode.py; the grader checks the whole package unchanged.
 RUNNER = Path(__file__).resolve()
 SANDBOX = RUNNER.with_name("sandbox.py")
 EXTRACT_SECONDS = 20

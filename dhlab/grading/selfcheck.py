@@ -3,8 +3,11 @@
 Before the first submission runs, :func:`check` starts **one kernel exactly as the submissions'
 will be started** — through the same runner, as the same unprivileged user, in the same mount
 namespace, with a working folder made the same way (hence the same ``TMPDIR``) and the same
-limits (``--memory-mb`` included) — and grades the teacher's solution (:data:`SOLUTION`: what a
+limits (``--memory-mb`` included) — and grades the teacher's solution (:func:`solution`: what a
 correct submission does, from ``import dhlab`` to the last answer), which must earn full marks.
+The solution is not installed with dhlab (students install it too): ``--source PATH``
+(``options.source``), else the course repository's ``tools/teacher/08_puma_assignment.ipynb`` when
+the grader runs from a clone of it (:func:`dhlab.grading.generate.find_source`).
 If it cannot, the grader stops with one message that says why (which user cannot enter which
 folder; or the memory limit, and a limit that worked) and what to do, and grades nothing: a
 machine problem must not become 300 rows of "grader error", nor a limit 300 zeros.
@@ -23,10 +26,8 @@ import tempfile
 from pathlib import Path
 from types import SimpleNamespace
 
-__all__ = ["SelfCheckError", "check", "SOLUTION"]
+__all__ = ["SelfCheckError", "check", "solution"]
 
-# the teacher's solution: a correct submission, run exactly as every submission will be
-SOLUTION = Path(__file__).resolve().parent / "data" / "08_puma_assignment.ipynb"
 LARGER_MB = 2048                     # tried when the teacher's memory limit fails (unless theirs is larger)
 
 
@@ -55,17 +56,29 @@ def check(iso, options) -> None:
     raise SelfCheckError(explain(iso, run))
 
 
+def solution(options) -> Path:
+    """The teacher's solution: a correct submission, run exactly as every submission will be
+    (``options.source``, else the course checkout's; :class:`SelfCheckError` saying where to get it)."""
+    from .generate import SourceMissing, find_source
+    try:
+        return find_source(getattr(options, "source", None))
+    except SourceMissing as e:
+        raise SelfCheckError(f"The grader's self-check needs the teacher's solution, so nothing was graded. {e}") \
+            from None
+
+
 def _grade_solution(iso, options, memory_mb) -> tuple:
     """(the runner's result, whether it ran without an error and earns full marks) for the
     solution notebook, copied as a submission is (:func:`dhlab.grading.staging.stage`)."""
     from .launch import run_submission
     from .staging import stage
+    source = solution(options)
     folder = Path(tempfile.mkdtemp(prefix="dhlab-grade-copies-"))     # where the real copies go
     os.chmod(folder, 0o700)
     try:
-        staged = stage(SOLUTION, SOLUTION.parent, folder, 0)
+        staged = stage(source, source.parent, folder, 0)
         if staged.copy is None:
-            return {"grader_error": f"{SOLUTION}: {staged.error}"}, False
+            return {"grader_error": f"{source}: {staged.error}"}, False
         limits = SimpleNamespace(timeout=max(60.0, options.timeout), total_timeout=max(120.0, options.total_timeout),
                                  memory_mb=memory_mb, output_mb=options.output_mb)
         run = run_submission(staged, limits, iso, retries=0)
@@ -76,8 +89,8 @@ def _grade_solution(iso, options, memory_mb) -> tuple:
 
 def _full_marks(run: dict) -> bool:
     """Whether the answers the kernel wrote earn full marks against the PUMA 560."""
-    from .answers import parse_json
-    from .checks import check_all
+    from ..assignment.answers import parse_json
+    from ..assignment.checks import check_all
     try:
         report = check_all(parse_json(run.get("answers_json") or "{}"))
     except (ValueError, AttributeError, TypeError):

@@ -31,7 +31,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from .language import _
+from ..i18n import _
 from .notebook_code import (NotebookError, check_notebook_bytes, code_cells_of, read_notebook_bytes,
                             read_notebook_json)
 from .release_language import notebook_language

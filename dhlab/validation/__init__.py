@@ -36,11 +36,13 @@ Options: ``as_choice(x, allowed, name)``, ``as_flag(x, name)``, ``as_text(x, nam
 ``as_timeout(x, name)``; ``has_angle_mark(x)`` finds a ``deg2rad()`` value at any depth;
 ``describe(x)`` is a short repr for messages.
 
-The checks live in three modules, one concept each — :mod:`dhlab.validation.values`
-(one value, the options, the error), :mod:`dhlab.validation.arrays` (arrays and 4×4
-matrices), :mod:`dhlab.validation.joints` (joint values and limits) — and are
-imported from here.
+The checks live in four modules, one concept each — :mod:`dhlab.validation.values`
+(one value, the options), :mod:`dhlab.validation.arrays` (arrays and 4×4 matrices),
+:mod:`dhlab.validation.joints` (joint values and limits), :mod:`dhlab.validation.marks`
+(the mark of a value made by ``deg2rad``) — and are imported from here. The error they
+raise, :class:`DHLabError`, lives in :mod:`dhlab.errors`.
 
+>>> from dhlab import deg2rad
 >>> as_angle(deg2rad(30), "theta")
 0.5235987755982988
 >>> as_angle(30, "theta")
@@ -50,20 +52,16 @@ dhlab.validation.DHLabError: theta = 30 rad is more than a full turn: angles are
 """
 from __future__ import annotations
 
-from ..units import Angle, AngleArray, deg2rad, has_angle_mark  # noqa: F401 (deg2rad: for the doctest)
-from .arrays import (_check_finite, _numpy_floats, _objects_floats, _sequence_floats,  # noqa: F401
-                     as_float_array, as_sequence, as_matrix4, as_sym_matrix4, as_vector, rigid_problem)
-from .joints import (_angle_columns, _check_angle_marks, _check_not_radians,  # noqa: F401
-                     as_qlim, check_joint_values)
-from .values import (_PLAIN, FULL_TURN, LARGEST_LENGTH, DHLabError, _finite, _magnitude,  # noqa: F401
-                     _not_a_number, _real, _sympy_real, as_angle, as_choice, as_flag, as_index, as_length,
-                     as_number, as_text, as_timeout, as_tolerance, check_length_size, describe)
+from ..errors import DHLabError
+from .arrays import as_float_array, as_matrix4, as_sequence, as_sym_matrix4, as_vector, check_finite, rigid_problem
+from .joints import as_qlim, check_joint_values
+from .marks import Angle, AngleArray, has_angle_mark, is_angle
+from .values import (FULL_TURN, LARGEST_LENGTH, as_angle, as_choice, as_flag, as_index, as_length, as_number,
+                     as_text, as_timeout, as_tolerance, check_length_size, describe, real_number)
 
 __all__ = [
     "DHLabError", "FULL_TURN", "LARGEST_LENGTH", "describe", "as_number", "as_angle", "as_length", "as_tolerance",
     "as_index", "as_float_array", "as_vector", "check_joint_values", "as_matrix4", "as_sym_matrix4",
     "rigid_problem", "as_qlim", "as_choice", "as_flag", "as_text", "as_timeout", "has_angle_mark",
-    "check_length_size", "as_sequence",
+    "check_length_size", "as_sequence", "check_finite", "real_number", "Angle", "AngleArray", "is_angle",
 ]
-
-_describe = describe   # the old private name

@@ -12,16 +12,23 @@ dhlab.validation.DHLabError: p must be numbers: p[1] = None is not a valid numbe
 """
 from __future__ import annotations
 
-import numpy as np
-import sympy as sp
+from typing import TYPE_CHECKING
 
+import numpy as np
+
+from ..errors import DHLabError
 from ..i18n import N_, _
-from ..units import Angle
-from .values import DHLabError, _real, describe
+from ..lazy_sympy import is_matrix
+from .marks import Angle
+from .values import describe, real_number
+
+if TYPE_CHECKING:
+    import sympy as sp
 
 MUST_BE_NUMBERS = N_("{name} must be numbers: {error}")
 
-__all__ = ["as_sequence", "as_float_array", "as_vector", "as_matrix4", "as_sym_matrix4", "rigid_problem"]
+__all__ = ["check_finite", "as_sequence", "as_float_array", "as_vector", "as_matrix4", "as_sym_matrix4",
+           "rigid_problem"]
 
 
 # ------------------------------------------------------------------------------------------
@@ -58,17 +65,17 @@ def as_float_array(x, name: str, finite: bool = False) -> np.ndarray:
     as a float array, or a DHLabError naming ``name``."""
     if isinstance(x, np.ndarray):
         arr = _numpy_floats(x, name)
-    elif isinstance(x, sp.MatrixBase):
+    elif is_matrix(x):
         arr = _objects_floats(np.array(x.tolist(), dtype=object).reshape(x.shape), name)
     elif isinstance(x, (list, tuple)):
         arr = _sequence_floats(x, name)
     else:
         try:
-            arr = np.array(_real(x, name), dtype=float)
+            arr = np.array(real_number(x, name), dtype=float)
         except DHLabError as error:
             raise DHLabError(_(MUST_BE_NUMBERS).format(name=name, error=error)) from None
     if finite:
-        _check_finite(arr, name)
+        check_finite(arr, name)
     return arr
 
 
@@ -118,13 +125,14 @@ def _objects_floats(obj: np.ndarray, name: str) -> np.ndarray:
             raise DHLabError(_("{name} is ragged: {where} is a sequence where a number was expected.").format(
                 name=name, where=where))
         try:
-            out[k] = _real(e, where)
+            out[k] = real_number(e, where)
         except DHLabError as error:
             raise DHLabError(_(MUST_BE_NUMBERS).format(name=name, error=error)) from None
     return out.reshape(obj.shape)
 
 
-def _check_finite(arr: np.ndarray, name: str) -> None:
+def check_finite(arr: np.ndarray, name: str) -> None:
+    """Refuse a float array with a nan or an infinity, naming the first such entry."""
     bad = ~np.isfinite(arr)
     if bad.any():
         index = tuple(int(i) for i in np.argwhere(bad)[0])
@@ -139,7 +147,7 @@ def as_vector(x, name: str, size: int) -> np.ndarray:
     if arr.shape != (size,):
         raise DHLabError(_("{name} must be {size} numbers, got shape {shape}: {value}.").format(
             name=name, size=size, shape=arr.shape, value=describe(x)))
-    _check_finite(arr, name)
+    check_finite(arr, name)
     return arr
 
 
@@ -151,7 +159,7 @@ def as_matrix4(T, name: str = "T", batch: bool = False) -> np.ndarray:
 
     A sympy Matrix is accepted when it has no symbols.
     """
-    if isinstance(T, sp.MatrixBase) and T.free_symbols:
+    if is_matrix(T) and T.free_symbols:
         raise DHLabError(_("{name} has symbols {symbols}: substitute numbers (M.subs(...)) before using it "
                            "numerically.").format(name=name, symbols=sorted(map(str, T.free_symbols))))
     arr = as_float_array(T, name)
@@ -161,19 +169,20 @@ def as_matrix4(T, name: str = "T", batch: bool = False) -> np.ndarray:
         raise DHLabError(_("{name} must be a homogeneous matrix of shape {expected}, got shape {shape}. A "
                            "homogeneous transform is [[R, p], [0, 0, 0, 1]] with a 3x3 rotation R and a position "
                            "p.").format(name=name, expected=expected, shape=arr.shape))
-    _check_finite(arr, name)
+    check_finite(arr, name)
     return arr
 
 
 def as_sym_matrix4(T, name: str = "T") -> sp.Matrix:
     """A 4x4 sympy Matrix (numbers or expressions), every entry real and finite."""
+    import sympy as sp      # (a symbolic result: imported on first use, see dhlab.lazy_sympy)
     if not isinstance(T, sp.MatrixBase):
         return sp.Matrix(as_matrix4(T, name))
     if T.shape != (4, 4):
         raise DHLabError(_("{name} must be a 4x4 homogeneous matrix, got shape {shape}. A homogeneous transform is "
                            "[[R, p], [0, 0, 0, 1]].").format(name=name, shape=T.shape))
     for (i, j), e in np.ndenumerate(np.array(T.tolist(), dtype=object)):
-        _real(e, f"{name}[{i}, {j}]", symbolic=True)
+        real_number(e, f"{name}[{i}, {j}]", symbolic=True)
     return sp.Matrix(T)
 
 

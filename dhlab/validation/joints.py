@@ -4,7 +4,7 @@ joints (at most a full turn: more is degrees by mistake), lengths for prismatic 
 
 Part of :mod:`dhlab.validation` (import from there).
 
->>> from dhlab import PrismaticDH, RevoluteDH
+>>> from dhlab import PrismaticDH, RevoluteDH, deg2rad
 >>> links = [RevoluteDH(), PrismaticDH()]
 >>> check_joint_values([deg2rad(30), 0.2], links).round(4).tolist()
 [0.5236, 0.2]
@@ -19,10 +19,11 @@ import math
 
 import numpy as np
 
+from ..errors import DHLabError
 from ..i18n import _
-from ..units import Angle, AngleArray, deg2rad, has_angle_mark  # noqa: F401 (deg2rad: for the doctest)
-from .arrays import _check_finite, as_float_array
-from .values import FULL_TURN, DHLabError, as_angle, as_number, check_length_size, describe
+from .arrays import check_finite, as_float_array
+from .marks import Angle, AngleArray, has_angle_mark
+from .values import FULL_TURN, as_angle, as_number, check_length_size, describe
 
 __all__ = ["check_joint_values", "as_qlim"]
 
@@ -51,7 +52,7 @@ def check_joint_values(q, links, name: str = "q", single: bool = False) -> np.nd
         message = (_("{name} must hold {n} joint value ({expected}), got shape {shape}.") if n == 1 else
                    _("{name} must hold {n} joint values ({expected}), got shape {shape}."))
         raise DHLabError(message.format(name=name, n=n, expected=expected, shape=arr.shape) + hint)
-    _check_finite(arr, name)
+    check_finite(arr, name)
     if arr.size == 0:
         return arr
     revolute = [j for j in range(n) if j not in prismatic]

@@ -1,5 +1,5 @@
 """Checks of one value at the boundary: a number, an angle, a length, a tolerance, an
-index, an option — and :class:`DHLabError`, the one error they all raise.
+index, an option (each raises :class:`dhlab.errors.DHLabError` with the fix).
 
 Numbers may be python, numpy or sympy; ``True``, ``None``, text, complex, dates and
 masked values are refused with the fix for their type. Part of :mod:`dhlab.validation`
@@ -7,6 +7,7 @@ masked values are refused with the fix for their type. Part of :mod:`dhlab.valid
 
 >>> as_number(np.float32(0.5), "x")
 0.5
+>>> from dhlab import deg2rad
 >>> as_length(deg2rad(30), "d")
 Traceback (most recent call last):
 ...
@@ -21,12 +22,13 @@ from decimal import Decimal
 from fractions import Fraction
 
 import numpy as np
-import sympy as sp
 
+from ..errors import DHLabError
 from ..i18n import N_, _
-from ..units import Angle, deg2rad, has_angle_mark  # noqa: F401 (deg2rad: for the doctest)
+from ..lazy_sympy import has_symbols, is_sympy
+from .marks import Angle, has_angle_mark
 
-__all__ = ["DHLabError", "FULL_TURN", "LARGEST_LENGTH", "describe", "as_number", "as_angle", "as_length",
+__all__ = ["FULL_TURN", "real_number", "LARGEST_LENGTH", "describe", "as_number", "as_angle", "as_length",
            "check_length_size", "as_tolerance", "as_index", "as_choice", "as_flag", "as_text", "as_timeout"]
 
 FULL_TURN = 2 * math.pi
@@ -35,11 +37,6 @@ _PLAIN = (float, int, Angle, np.float64, np.float32, np.int64, np.int32, np.int1
           np.uint8, np.uint16, np.uint32, np.uint64, np.float16)
 
 
-class DHLabError(ValueError):
-    """Bad input to dhlab: the message says what was wrong and how to fix it."""
-
-
-DHLabError.__module__ = "dhlab.validation"   # where students meet it, and where it is imported from
 TOO_LARGE = N_("{name} = {value} is too large to be a number of this course.")
 
 
@@ -63,12 +60,12 @@ def _not_a_number(x, name: str) -> DHLabError:
         why = _("True/False is not a number here: give the number itself (e.g. 1.0 or 0.0)")
     elif isinstance(x, (str, bytes)):
         why = _("it is text: write the number without quotes (e.g. 0.5, not '0.5')")
-    elif isinstance(x, (complex, np.complexfloating)) or (isinstance(x, sp.Basic) and x.is_number):
+    elif isinstance(x, (complex, np.complexfloating)) or (is_sympy(x) and x.is_number):
         why = _("it is a complex number: only real numbers make a pose (check for a sqrt or arcsin of a value "
                 "out of range)")
     elif isinstance(x, (datetime.date, datetime.time, datetime.timedelta, np.datetime64, np.timedelta64)):
         why = _("it is a date or a time, not a number")
-    elif isinstance(x, sp.Basic) and x.free_symbols:
+    elif has_symbols(x):
         why = _("it has the symbols {symbols}: here pass plain numbers (symbols belong in the symbolic functions, "
                 "e.g. robot.fk_sym(); substitute with .subs())").format(symbols=sorted(map(str, x.free_symbols)))
     elif x is np.ma.masked:
@@ -80,15 +77,16 @@ def _not_a_number(x, name: str) -> DHLabError:
     return DHLabError(_("{name} = {value} is not a valid number: {why}.").format(name=name, value=describe(x), why=why))
 
 
-def _real(x, name: str, symbolic: bool = False):
-    """``x`` as a float; with ``symbolic`` a sympy value stays sympy (checked)."""
+def real_number(x, name: str, symbolic: bool = False):
+    """``x`` (one real number of python, numpy or sympy) as a float; with ``symbolic`` a sympy
+    value stays sympy (checked). Unlike :func:`as_number`, an infinite value passes."""
     if isinstance(x, _PLAIN) and not isinstance(x, (bool, np.bool_)):
         try:
             return float(x)
         except OverflowError:
             raise DHLabError(_(TOO_LARGE).format(name=name, value=describe(x))) from None
     if isinstance(x, np.ndarray) and x.ndim == 0 and not isinstance(x, np.ma.MaskedArray):
-        return _real(x[()], name, symbolic)
+        return real_number(x[()], name, symbolic)
     if isinstance(x, (Fraction, Decimal, np.floating, np.integer)) and not isinstance(x, np.bool_):
         try:
             value = float(x)
@@ -98,12 +96,13 @@ def _real(x, name: str, symbolic: bool = False):
         if math.isinf(value) and not infinite:          # a finite value too large for a float (Decimal('1e400'))
             raise DHLabError(_(TOO_LARGE).format(name=name, value=describe(x))) from None
         return value
-    if isinstance(x, sp.Basic):
+    if is_sympy(x):
         return _sympy_real(x, name, symbolic)
     raise _not_a_number(x, name)
 
 
 def _sympy_real(x, name: str, symbolic: bool):
+    import sympy as sp      # (loaded already: x is a sympy object)
     if not isinstance(x, sp.Expr) or isinstance(x, sp.MatrixBase):
         raise DHLabError(_("{name} = {value} is not a number or an expression (a {type}).").format(
             name=name, value=describe(x), type=type(x).__name__))
@@ -141,12 +140,12 @@ def as_number(x, name: str, *, symbolic: bool = False, finite: bool = True):
     >>> as_number(np.float32(0.5), "x")
     0.5
     """
-    value = _real(x, name, symbolic)
+    value = real_number(x, name, symbolic)
     return _finite(value, name) if finite else value
 
 
 def _magnitude(value) -> float:
-    return abs(float(value)) if not isinstance(value, sp.Basic) or not value.free_symbols else 0.0
+    return 0.0 if has_symbols(value) else abs(float(value))
 
 
 def as_angle(x, name: str, *, symbolic: bool = False, turns: float = 1.0):
@@ -193,7 +192,8 @@ def as_tolerance(x, name: str = "tol", upper: float = 1e-2, zero: bool = False) 
 
 def as_index(x, name: str, lo: int, hi: int) -> int:
     """A whole number in lo … hi (1.5, '1' and True are refused)."""
-    if isinstance(x, (bool, np.bool_)) or not isinstance(x, (numbers.Integral, np.integer, sp.Integer)):
+    whole = isinstance(x, (numbers.Integral, np.integer)) or is_sympy(x) and x.is_Integer
+    if isinstance(x, (bool, np.bool_)) or not whole:
         raise DHLabError(_("{name} must be a whole number from {lo} to {hi}, got {value}.").format(
             name=name, lo=lo, hi=hi, value=describe(x)))
     value = int(x)

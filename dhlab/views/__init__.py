@@ -1,7 +1,10 @@
 """The interactive views: robots drawn in place with matplotlib, moved by ipywidgets sliders.
 
 - :mod:`~dhlab.views.figures` — figures that are pictures: readable sizes, never clipped, the projector setting
-- :mod:`~dhlab.views.livefigure` — a figure redrawn in place (blitting), inline or ipympl
+- :mod:`~dhlab.views.livefigure` — a figure redrawn in place (blitting), inline, ipympl or canvas
+- :mod:`~dhlab.views.canvas` — the canvas backend: the browser paints what moves (``receive`` takes its messages)
+- :mod:`~dhlab.views.png` — the fast PNG writer of every update
+- :mod:`~dhlab.views.poses` — a robot's pose in a view or a panel, and its units on a slider
 - :mod:`~dhlab.views.camera` — camera presets, and a default from which every triad reads right-handed
 - :mod:`~dhlab.views.framing` — the robot fills its view, re-framed with hysteresis
 - :mod:`~dhlab.views.labels` — frame labels that never pile up

@@ -18,8 +18,8 @@ frames a second. Here (an anywidget, its ES module ``canvas.js``):
 * dragging a 3D axes turns it in the browser; on release the final (elev, azim) comes back
   here, the axes take that view and matplotlib redraws;
 * a notebook page that cannot run ``canvas.js`` (anywidget's front end is not installed where
-  JupyterLab runs) never says "loaded": after :data:`FRONT_END_S` the figure falls back to PNG
-  frames (the "image" backend) in the same place (:func:`watch_front_end`).
+  JupyterLab runs) never says "loaded": after a few seconds the figure falls back to PNG
+  frames (the "image" backend) in the same place (:func:`dhlab.views.livefigure.watch_front_end`).
 
 An artist the browser cannot paint (see :class:`~dhlab.views.scene.Unsupported`) makes that
 figure send a full matplotlib frame at every step instead (the old cost, never a wrong
@@ -27,23 +27,19 @@ picture). Without a browser (nbval, scripts) nothing waits for one: the messages
 """
 from __future__ import annotations
 
-import asyncio
 import math
 import weakref
 from pathlib import Path
 
 import anywidget
-import numpy as np
 import traitlets
 
 from .scene import Unsupported, css_color, describe_scene
 
-__all__ = ["CanvasWidget", "make_widget", "send_scene", "send_rig", "send_rest", "turned", "set_pixel_ratio",
+__all__ = ["CanvasWidget", "send_scene", "send_rig", "send_rest", "turned", "set_pixel_ratio",
            "MIN_RATIO", "MAX_RATIO"]
 
 MIN_RATIO, MAX_RATIO = 1.0, 3.0        # pixel ratios rendered (a 4K laptop reports 2 to 2.5)
-FRONT_END_S = 4           # a notebook page that has not run canvas.js this long: PNG frames instead
-_WATCH_S = 1.0            # how often the kernel looks (between cells: it runs on the kernel's event loop)
 
 
 def _bundle(*names) -> str:
@@ -85,7 +81,22 @@ class CanvasWidget(anywidget.AnyWidget):
 
     # --- what the browser says -------------------------------------------------------------
     def _on_browser_message(self, _widget, content, _buffers):
+        self.receive(content)
+
+    def receive(self, message) -> None:
+        """Act on one ``message`` of the browser (``canvas.js``), as anywidget delivers it:
+
+        * ``{"kind": "loaded"}``: the page runs ``canvas.js``; ``{"kind": "ready"}``: it shows the
+          figure — the kernel sends the rig and the scene;
+        * ``{"kind": "rest", "seq": n}``: the picture has not moved for a while — the kernel sends
+          matplotlib's frame of pose ``n`` if it is still the last one (:attr:`LiveFigure.seq`);
+        * ``{"kind": "view", "axes": i, "elev": e, "azim": a}``: a 3D axes was turned in the browser.
+
+        Anything else (a newer or older front end) is ignored. Tests drive the protocol with it
+        as a browser would.
+        """
         live = self._live()
+        content = message
         if live is None or not isinstance(content, dict):
             return
         kind = content.get("kind")
@@ -121,87 +132,18 @@ class CanvasWidget(anywidget.AnyWidget):
 
 
 # --- what a LiveFigure does on the canvas path ----------------------------------------------
-def make_widget(live) -> CanvasWidget:
-    """The widget of ``live``, holding its background and its current frame."""
-    widget = CanvasWidget(live, css_size=css_size(live))
-    live._canvas = widget
-    if live._background is None:
-        live.figure.canvas.draw()          # the draw_event handler sends the background
-    else:
-        widget.background = background_png(live)
-    live._current_agg()
-    widget.show_frame(live._encode(), live._seq)
-    watch_front_end(live)
-    return widget
-
-
-def watch_front_end(live) -> None:
-    """Fall back to PNG frames if the notebook page that ran this cell cannot run canvas.js.
-
-    A page with anywidget's front end runs ``initialize`` of canvas.js, which says "loaded", as
-    soon as it creates the widget (before showing it). A cell run from a notebook page (JupyterLab,
-    Notebook 7, the browser edition: its request names the cell) whose widget has not said so
-    after :data:`FRONT_END_S` gets ``live.fall_back_to_image()``. The kernel looks only between
-    cells, every :data:`_WATCH_S`, so a message queued behind a long cell is read first. Run by
-    nbval, a grader, Voila (no cell named) or outside a kernel's event loop: nothing is watched."""
-    from .livefigure import _current_cell
-
-    try:
-        loop = asyncio.get_running_loop()
-    except RuntimeError:
-        return
-    if _current_cell() is None:
-        return
-    widget = live._canvas
-
-    def check(looks: int) -> None:
-        if live._canvas is not widget or widget.loaded:
-            return
-        if looks * _WATCH_S >= FRONT_END_S:
-            live.fall_back_to_image()
-        else:
-            loop.call_later(_WATCH_S, check, looks + 1)
-
-    loop.call_later(_WATCH_S, check, 1)
-
-
-def css_size(live) -> list:
-    """The figure's size in CSS pixels (its pixels at the base dpi)."""
-    ratio = live.figure.dpi / live._base_dpi
-    return [round(v / ratio) for v in live.figure.canvas.get_width_height()]
-
-
-def background_png(live) -> bytes:
-    """The figure without its moving artists (its cached background), as PNG bytes; the Agg
-    buffer keeps what it holds (the moving artists too, if it had them)."""
-    from .livefigure import _PNG_WITH_ALPHA, encode_png
-
-    try:
-        pixels = np.asarray(live._background)          # the region's own pixels (matplotlib >= 3.8)
-    except (TypeError, ValueError):
-        pixels = None
-    if pixels is not None and pixels.shape == np.asarray(live.figure.canvas.buffer_rgba()).shape:
-        return encode_png(pixels, alpha=_PNG_WITH_ALPHA)
-    live.figure.canvas.restore_region(live._background)      # an older matplotlib: via the buffer
-    png = live._encode()
-    live._paint_moving()
-    live._agg_stale = False
-    return png
-
-
 def send_scene(live) -> None:
     """The moving artists to the browser; a full frame if one of them cannot be sent."""
     try:
         content, numbers = describe_scene(live.figure, live.moving, quick=live.dragged)
     except Unsupported:
-        live._current_agg()
-        live._canvas.show_frame(live._encode(), live._seq)
+        live.canvas_widget.show_frame(live.current_png(), live.seq)
         return
-    content["seq"] = live._seq
+    content["seq"] = live.seq
     if live.rig is not None:
         content["q"] = live.rig.q          # the pose drawn: the browser's own may be newer
     content["face"] = css_color(live.figure.get_facecolor())
-    live._canvas.send_scene(content, numbers)
+    live.canvas_widget.send_scene(content, numbers)
 
 
 def send_rig(live) -> None:
@@ -210,15 +152,14 @@ def send_rig(live) -> None:
     if live.rig is None:
         return
     content, numbers = live.rig.describe(live.moving)
-    live._canvas.send(content, buffers=[memoryview(numbers.tobytes())])
+    live.canvas_widget.send(content, buffers=[memoryview(numbers.tobytes())])
 
 
 def send_rest(live, seq: int) -> None:
     """The browser rests on pose ``seq``: matplotlib's frame of it (if still the current one)."""
     live.settle()        # e.g. framing the robot again after a drag: a new scene (and seq) if it redraws
-    if seq == live._seq and live._canvas is not None:
-        live._current_agg()
-        live._canvas.show_frame(live._encode(), seq)
+    if seq == live.seq and live.canvas_widget is not None:
+        live.canvas_widget.show_frame(live.current_png(), seq)
 
 
 def turned(live, ax, elev: float, azim: float) -> None:
@@ -228,15 +169,8 @@ def turned(live, ax, elev: float, azim: float) -> None:
 
 
 def set_pixel_ratio(live, ratio: float) -> None:
-    """Render at ``ratio`` device pixels per CSS pixel (sharp on a HiDPI screen)."""
-    if abs(live.figure.dpi - live._base_dpi * ratio) < 1e-9:
-        return
-    live.figure.set_dpi(live._base_dpi * ratio)
-    live._background = None
-    live.figure.canvas.draw()
-    if live._canvas is not None:
-        live._canvas.css_size = css_size(live)
-    live._publish()
+    """Render at ``ratio`` device pixels per CSS pixel (:meth:`LiveFigure.set_pixel_ratio`)."""
+    live.set_pixel_ratio(ratio)
 
 
 def _whole(value) -> bool:

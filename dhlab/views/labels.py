@@ -32,11 +32,11 @@ from matplotlib.transforms import Affine2D, IdentityTransform
 from mpl_toolkits.mplot3d import proj3d
 
 __all__ = ["FrameLabels", "FrameLabels3D", "group_points", "merged_name", "place_boxes",
-           "LABEL_FONTSIZE"]
+           "overlap_cost", "outside_cost", "cover_cost", "GAP", "RADII", "LABEL_FONTSIZE"]
 
 LABEL_FONTSIZE = 10.0            # points: 13.9 px at 100 dpi
-_GAP = 3.0                       # pixels between an origin and its label (at least)
-_RADII = (0.0, 8.0, 18.0, 32.0, 50.0, 75.0, 105.0)      # extra distances tried, pixels
+GAP = 3.0                       # pixels between an origin and its label (at least)
+RADII = (0.0, 8.0, 18.0, 32.0, 50.0, 75.0, 105.0)      # extra distances tried, pixels
 _DIRECTIONS = 16
 
 
@@ -68,7 +68,7 @@ def merged_name(names) -> str:
     return r"$\{" + ",".join(inner) + r"\}$"
 
 
-def place_boxes(anchors, sizes, bounds, obstacles=(), gap: float = _GAP) -> tuple:
+def place_boxes(anchors, sizes, bounds, obstacles=(), gap: float = GAP) -> tuple:
     """Screen positions for labels that do not overlap.
 
     ``anchors`` (k, 2): the pixel each label belongs to; ``sizes`` (k, 2): label
@@ -89,7 +89,7 @@ def place_boxes(anchors, sizes, bounds, obstacles=(), gap: float = _GAP) -> tupl
     obstacles = np.asarray(obstacles, dtype=float).reshape(-1, 2)
     angles = 2 * np.pi * np.arange(_DIRECTIONS) / _DIRECTIONS
     unit = np.column_stack([np.cos(angles), np.sin(angles)])
-    radii = np.asarray(_RADII)
+    radii = np.asarray(RADII)
     placed = np.zeros((0, 4))                     # boxes taken: x0, y0, x1, y1
     corners, distances = np.zeros_like(anchors), np.zeros(len(anchors))
     gaps = anchors[:, None, :] - anchors[None, :, :]
@@ -109,8 +109,8 @@ def place_boxes(anchors, sizes, bounds, obstacles=(), gap: float = _GAP) -> tupl
             # candidate centres: the box touches a circle of radius GAP + r around the anchor
             centres = a + u * (gap + radius + half_extent)[:, None]
             boxes = np.concatenate([centres - [w / 2, h / 2], centres + [w / 2, h / 2]], axis=-1)
-            cost = _overlap_cost(boxes, placed) + _outside_cost(boxes, bounds) \
-                + _cover_cost(boxes, obstacles, a) + 1e-3 * ring           # nearer is better
+            cost = overlap_cost(boxes, placed) + outside_cost(boxes, bounds) \
+                + cover_cost(boxes, obstacles, a) + 1e-3 * ring           # nearer is better
             j = int(np.argmin(cost))
             if cost[j] < best_cost:
                 best_cost, best_box, distances[k] = cost[j], boxes[j], radius
@@ -119,7 +119,8 @@ def place_boxes(anchors, sizes, bounds, obstacles=(), gap: float = _GAP) -> tupl
     return corners, distances
 
 
-def _overlap_cost(boxes, placed):
+def overlap_cost(boxes, placed):
+    """Per candidate box (x0, y0, x1, y1), a large cost for touching a box already placed."""
     if not len(placed):
         return np.zeros(len(boxes))
     dx = np.minimum(boxes[:, None, 2], placed[None, :, 2]) - np.maximum(boxes[:, None, 0], placed[None, :, 0])
@@ -128,14 +129,15 @@ def _overlap_cost(boxes, placed):
     return np.sum(np.where(hit, 1000 + np.maximum(dx, 0) * np.maximum(dy, 0), 0), axis=1)
 
 
-def _outside_cost(boxes, bounds):
+def outside_cost(boxes, bounds):
+    """Per candidate box, a large cost for sticking out of ``bounds`` (the axes), growing with how far."""
     x0, y0, x1, y1 = bounds
     out = (np.maximum(x0 - boxes[:, 0], 0) + np.maximum(boxes[:, 2] - x1, 0)
            + np.maximum(y0 - boxes[:, 1], 0) + np.maximum(boxes[:, 3] - y1, 0))
     return np.where(out > 0, 1000 + 100 * out, 0)
 
 
-def _cover_cost(boxes, points, own):
+def cover_cost(boxes, points, own):
     """A small cost for covering another origin's dot (not a hard rule)."""
     # only the points near some candidate can be covered: the same cost, far fewer comparisons
     lo, hi = boxes[:, :2].min(axis=0) - 3, boxes[:, 2:].max(axis=0) + 3
@@ -201,19 +203,26 @@ class FrameLabels(PathCollection):
         self.stale = True
 
     def get_points(self) -> np.ndarray:
+        """The origins labelled, in data coordinates (2 or 3 columns, as the axes)."""
         return self._points[:, :self._dims]
+
+    def groups(self) -> list:
+        """The origins that share one label: lists of indices (see :func:`group_points`)."""
+        return group_points(self._points, self._tol)
 
     _dims = 2
 
-    def _to_pixels(self, points) -> np.ndarray:
+    def to_pixels(self, points) -> np.ndarray:
+        """Data points (N, 2 or 3) as display pixels (N, 2) of this label's axes."""
         return self.axes.transData.transform(points[:, :2])
 
     # --- drawing -------------------------------------------------------------------
-    def _layout(self):
+    def layout(self):
+        """Place the labels for the axes as they are now (each draw does; see :func:`place_boxes`)."""
         points = self._points
         groups = group_points(points, self._tol)
         self.texts = [merged_name([self.names[i] for i in g]) for g in groups]
-        anchors_all = self._to_pixels(points)
+        anchors_all = self.to_pixels(points)
         anchors = anchors_all[[g[0] for g in groups]]
         scale = self.figure.dpi / 72.0
         outlines = [_outline(t, self.fontsize) for t in self.texts]
@@ -221,7 +230,7 @@ class FrameLabels(PathCollection):
         box = self.axes.bbox                      # labels stay inside their axes
         bounds = (box.x0 + 2, box.y0 + 2, box.x1 - 2, box.y1 - 2)
         avoid = self._avoid[~np.isnan(self._avoid).any(axis=1)]
-        obstacles = np.vstack([anchors_all, self._to_pixels(avoid)]) if len(avoid) else anchors_all
+        obstacles = np.vstack([anchors_all, self.to_pixels(avoid)]) if len(avoid) else anchors_all
         corners, distances = place_boxes(anchors, sizes, bounds, obstacles=obstacles,
                                          gap=self.gap * scale)      # clear of the origin's marker
         self._boxes = np.column_stack([corners, corners + sizes]) if len(corners) else np.zeros((0, 4))
@@ -229,7 +238,7 @@ class FrameLabels(PathCollection):
         self.set_paths([path.transformed(to_pixels) for path, _ in outlines])
         self.set_offsets(corners)
         self.set_transform(IdentityTransform())
-        far = distances > _RADII[1]
+        far = distances > RADII[1]
         segments = []
         for a, c, s in zip(anchors[far], corners[far], sizes[far]):
             end = np.clip(a, c, c + s)                  # the nearest point of the label's box
@@ -239,7 +248,7 @@ class FrameLabels(PathCollection):
     def draw(self, renderer):
         if not self.get_visible():
             return
-        self._layout()
+        self.layout()
         self.leaders.draw(renderer)
         super().draw(renderer)
 
@@ -253,7 +262,8 @@ class FrameLabels3D(FrameLabels):
 
     _dims = 3
 
-    def _to_pixels(self, points):
+    def to_pixels(self, points):
+        """Data points (N, 3) projected by the 3D axes' current view, as display pixels (N, 2)."""
         x, y, _ = proj3d.proj_transform(*points.T, self.axes.M)
         return self.axes.transData.transform(np.column_stack([x, y]))
 

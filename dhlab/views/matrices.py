@@ -37,7 +37,7 @@ import re
 import sympy as sp
 
 from ..i18n import _
-from ..symbolic import _check_finite_entries, compact, legend
+from ..symbolic import check_finite_entries, compact, legend
 from ..validation import DHLabError, as_number, as_text
 
 __all__ = ["show_matrix", "ShownMatrix", "latex_width_px", "PX_PER_EM", "COLUMN_PX"]
@@ -228,7 +228,7 @@ def _as_matrix(M) -> sp.Matrix:
         except Exception:      # sympy raises several kinds for things that are not matrices
             raise DHLabError(_("show_matrix: expected a sympy Matrix (or a nested list of expressions), got "
                                "{type}.").format(type=type(M).__name__)) from None
-    _check_finite_entries(M, "show_matrix")     # no nan, zoo or oo, the entry named
+    check_finite_entries(M, "show_matrix")     # no nan, zoo or oo, the entry named
     return M
 
 

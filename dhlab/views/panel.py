@@ -3,8 +3,7 @@ shown to the user, and cleaning up when its notebook cell runs again.
 
 Units (one rule everywhere): a revolute joint's slider is in **degrees**, a
 prismatic joint's slider in the robot's **length unit**; the maths gets
-radians. :func:`slider_to_q` and :func:`q_to_slider` are the only two places
-that convert.
+radians (:mod:`dhlab.views.poses` converts).
 
 >>> import dhlab
 >>> robot = dhlab.robots.pr_mechanism()
@@ -23,10 +22,12 @@ import ipywidgets as widgets
 import numpy as np
 
 from ..i18n import _
-from ..validation import DHLabError
+from .figures import projector_scale
 from .keys import FIGURE_CLASS, slider_keys
 from .livefigure import LiveFigure, forget_previous_run
-from .view import one_pose
+from .poses import checked_start, q_to_slider, slider_to_q, unit_of
+from .projector import widgets_scale
+from .rig import Rig
 
 __all__ = ["Panel", "joint_sliders", "slider_to_q", "q_to_slider", "unit_of", "checked_start", "follow_sliders",
            "view_controls", "SliderEchoes"]
@@ -39,28 +40,7 @@ SLIDER_PX, SIDE_PX, ERROR_PX = 330, 370, 520   # widths at normal size: a slider
 def control_width(px: float) -> str:
     """A control's width: ``px`` at normal size, wider under :func:`dhlab.projector` (as its
     widgets' text), so that a panel made afterwards never squeezes a slider or a readout."""
-    from .figures import projector_scale
-    from .projector import widgets_scale
-
     return f"{px * widgets_scale(projector_scale()):g}px"
-
-
-def unit_of(robot, link) -> str:
-    """The display unit of a joint: '°' for revolute, the robot's length unit for prismatic."""
-    if link.is_revolute:
-        return "°"
-    return getattr(robot, "unit", "") or _("length")
-
-
-def q_to_slider(link, value: float) -> float:
-    """Joint value (radians or length) -> slider value (degrees or length)."""
-    return float(np.degrees(value)) if link.is_revolute else float(value)
-
-
-def slider_to_q(robot, sliders) -> np.ndarray:
-    """The joint vector (radians / length units) that the sliders show."""
-    return np.array([np.radians(s.value) if link.is_revolute else s.value
-                     for link, s in zip(robot.links, sliders)], dtype=float)
 
 
 def follow_sliders(view, sliders) -> None:
@@ -70,23 +50,7 @@ def follow_sliders(view, sliders) -> None:
     live = view.live
     if live is None or live.backend != "canvas":
         return
-    from .rig import Rig
-
     live.rig = Rig(view, sliders, [np.pi / 180 if link.is_revolute else 1.0 for link in view.robot.links])
-
-
-def checked_start(robot, q) -> np.ndarray:
-    """``q`` as a float array, refused with a clear message if it has the wrong
-    length or lies outside the joint limits (a slider could not show it)."""
-    q = one_pose(robot, q)              # one pose: no batch, text, NaN, degrees as radians
-    for j, (link, value) in enumerate(zip(robot.links, q)):
-        lo, hi = link.qlim
-        if not lo - 1e-12 <= value <= hi + 1e-12:
-            shown = [f"{q_to_slider(link, v):g}{unit_of(robot, link)}" for v in (value, lo, hi)]
-            raise DHLabError(_("q[{j}] = {value} is outside joint {joint}'s limits [{lo}, {hi}]; start inside "
-                               "them (revolute values in radians: use dhlab.deg2rad(...) for degrees).").format(
-                j=j, value=shown[0], joint=j + 1, lo=shown[1], hi=shown[2]))
-    return q
 
 
 def joint_sliders(robot, q, labels=None):
@@ -246,6 +210,12 @@ class Panel(widgets.HBox):
                                                align_items="flex-start"))
         live.on_new_widget(self._figure_replaced)
         forget_previous_run(self)
+
+    @property
+    def keys_widget(self):
+        """The invisible widget that gives a focused slider its arrow keys (:mod:`dhlab.views.keys`),
+        or None: anywidget is missing, or the page cannot run its module (the figure fell back to PNG)."""
+        return self._keys
 
     def _figure_replaced(self, old, new) -> None:
         # the page cannot run the canvas backend's module (LiveFigure.fall_back_to_image): the PNG

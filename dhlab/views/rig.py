@@ -31,7 +31,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..kinematics import elementary
-from .scene import Unsupported, _describe, _Numbers
+from .scene import Numbers, Unsupported, describe_artist
 
 __all__ = ["program_steps", "nodes", "fit", "Rig", "TOLERANCE", "PROBES"]
 
@@ -145,7 +145,7 @@ class Rig:
                 artist.__dict__.pop("_dhlab_placed", None)
         node_poses = np.array([nodes(robot, q) for q in poses])
         size = max(float(robot.reach()), 1e-6)
-        numbers, artists = _Numbers(), {}
+        numbers, artists = Numbers(), {}
         for k in mine:
             entries = _fit_artist(seen[k], node_poses, size, numbers)
             if entries:
@@ -159,10 +159,10 @@ class Rig:
 def _seen(artist, figure):
     """The point arrays of one artist as the scene would send them now, or None."""
     try:
-        numbers = _Numbers()
+        numbers = Numbers()
         axes = figure.axes
         space = axes.index(artist.axes) if artist.axes in axes else -1
-        item = _describe(artist, space, numbers, figure.dpi / 72.0)
+        item = describe_artist(artist, space, numbers, figure.dpi / 72.0)
     except Unsupported:
         return None
     return _arrays(item, numbers.buffer().astype(float))

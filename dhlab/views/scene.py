@@ -39,14 +39,14 @@ from mpl_toolkits.mplot3d import art3d
 
 from .labels import FrameLabels
 
-__all__ = ["describe_scene", "axes_camera", "css_color", "faces3d", "Unsupported"]
+__all__ = ["describe_scene", "describe_artist", "Numbers", "axes_camera", "css_color", "faces3d", "Unsupported"]
 
 
 class Unsupported(Exception):
     """An artist the browser layer cannot draw exactly enough: fall back to a matplotlib frame."""
 
 
-class _Numbers:
+class Numbers:
     """All the numbers of one scene in one float32 buffer; items keep (offset, count)."""
 
     def __init__(self):
@@ -125,14 +125,14 @@ def describe_scene(figure, moving, quick: bool = False) -> tuple:
     origins, at the last full layout (placing them afresh is half the cost of a step); the
     picture at rest lays them out again."""
     axes = [ax for ax in figure.axes]
-    numbers = _Numbers()
+    numbers = Numbers()
     scale = figure.dpi / 72.0                                  # points -> pixels
     items = []
     for index, artist in enumerate(moving):
         if not artist.get_visible():
             continue
         space = axes.index(artist.axes) if artist.axes in axes else -1
-        item = _describe(artist, space, numbers, scale, quick)
+        item = describe_artist(artist, space, numbers, scale, quick)
         item["clip"] = _clip(artist)
         item["artist"] = index               # which moving artist (a rig names them so: rig.py)
         items.append(item)
@@ -141,7 +141,9 @@ def describe_scene(figure, moving, quick: bool = False) -> tuple:
     return content, numbers.buffer()
 
 
-def _describe(artist, space, numbers, scale, quick=False) -> dict:
+def describe_artist(artist, space, numbers, scale, quick=False) -> dict:
+    """One moving artist as the browser paints it (its numbers appended to ``numbers``), or
+    :class:`Unsupported` for an artist ``canvas.js`` cannot paint."""
     if isinstance(artist, FrameLabels):
         return _labels(artist, space, numbers, quick)
     if isinstance(artist, Line2D):
@@ -303,12 +305,12 @@ def _polys2d(polys, space, numbers, scale) -> dict:
 def _labels(labels, space, numbers, quick=False) -> dict:
     """Frame labels: their outlines (pixels, y down) relative to their origin's pixel, which the
     browser projects, so that while it turns the view the labels travel with their origins."""
-    points = labels._points[:, :labels._dims]
-    groups = [g[0] for g in _groups(labels)]
+    points = labels.get_points()
+    groups = [g[0] for g in labels.groups()]
     last = getattr(labels, "_dhlab_placed", None)
     if not (quick and last is not None and last[0] == groups):
-        labels._layout()                              # where matplotlib would put them now
-        anchors = labels._to_pixels(points)[groups]
+        labels.layout()                              # where matplotlib would put them now
+        anchors = labels.to_pixels(points)[groups]
         leaders = np.array([seg for seg in labels.leaders.get_segments()], dtype=float).reshape(-1, 2, 2)
         anchor_of = [int(np.argmin(np.linalg.norm(anchors - seg[0], axis=1))) for seg in leaders]
         last = labels._dhlab_placed = (groups, labels.get_offsets() - anchors, anchor_of,
@@ -324,9 +326,6 @@ def _labels(labels, space, numbers, quick=False) -> dict:
                         "width": float(np.ravel(labels.leaders.get_linewidth())[0]) * labels.figure.dpi / 72}}
 
 
-def _groups(labels):
-    from .labels import group_points
-    return group_points(labels._points, labels._tol)
 
 
 def _text(text, space, numbers, scale) -> dict:

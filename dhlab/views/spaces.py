@@ -43,8 +43,9 @@ from matplotlib.transforms import offset_copy
 from ..i18n import _
 from ..validation import DHLabError, as_choice, as_length, check_joint_values, describe
 from .livefigure import LiveFigure
-from .panel import Panel, SliderEchoes, checked_start, follow_sliders, joint_sliders, q_to_slider, unit_of
-from .view import checked_robot, default_q, robot_view
+from .panel import Panel, SliderEchoes, follow_sliders, joint_sliders
+from .poses import checked_start, default_q, q_to_slider, unit_of
+from .view import checked_robot, robot_view
 
 __all__ = ["spaces", "SpacesPanel", "wrap_into_limits"]
 

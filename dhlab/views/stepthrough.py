@@ -29,7 +29,8 @@ from ..validation import (DHLabError, as_angle, as_index, as_length, as_matrix4,
                           has_angle_mark)
 from .camera import set_camera
 from .livefigure import LiveFigure
-from .panel import Panel, checked_start
+from .panel import Panel
+from .poses import checked_start
 from .teach import matrix_html
 from .layout import keep_texts_inside, space_ticks
 from .triads import LETTER_MARKERS, axis_colors, letter_points, triad_segments

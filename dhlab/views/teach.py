@@ -20,8 +20,9 @@ import ipywidgets as widgets
 from ..i18n import _
 from ..transforms import rpy
 from ..validation import DHLabError, as_flag
-from .panel import Panel, checked_start, follow_sliders, joint_sliders, q_to_slider, slider_to_q, view_controls
-from .view import checked_robot, default_q, robot_view
+from .panel import Panel, follow_sliders, joint_sliders, view_controls
+from .poses import checked_start, default_q, q_to_slider, slider_to_q
+from .view import checked_robot, robot_view
 
 __all__ = ["teach", "TeachPanel", "pose_text", "matrix_html"]
 

@@ -37,8 +37,9 @@ from .labels import FrameLabels, FrameLabels3D
 from .triads import AXIS_COLORS, triad_segments
 from .view2d import RobotView2D
 from .view3d import RobotView3D
+from .poses import default_q, one_pose
 from .viewbase import (EE_COLOR, JOINT_AXIS_COLOR, LINK_COLOR, STYLES, TRIAD_FRACTION, RobotView,  # noqa: F401
-                       checked_robot, default_q, line_in_box, one_pose, typical_size, workspace_box)
+                       checked_robot, line_in_box, typical_size, workspace_box)
 
 __all__ = ["RobotView", "RobotView3D", "RobotView2D", "robot_view", "triad_segments",
            "FrameLabels", "FrameLabels3D", "AXIS_COLORS", "default_q", "workspace_box",

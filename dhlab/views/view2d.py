@@ -44,7 +44,7 @@ class RobotView2D(RobotView):
         if self.framing == "fixed":
             lo, hi = self.box[0][:2], self.box[1][:2]
         else:
-            lo, hi = framing.frame_box(self._framed_points()[:, :2], pad=1.0 * self.triad_length)
+            lo, hi = framing.frame_box(self.framed_points()[:, :2], pad=1.0 * self.triad_length)
         center, half = (lo + hi) / 2, (hi - lo) / 2 / self.zoom
         if self.framing == "follow":      # equal scaling: widen the shorter side to the axes' shape
             shape = (ax.get_position().height * ax.figure.bbox.height

@@ -41,14 +41,14 @@ class RobotView3D(RobotView):
         if self.framing == "fixed":
             lo, hi = self.box
         else:
-            lo, hi = framing.frame_box(self._framed_points(), pad=0.6 * self.triad_length)
+            lo, hi = framing.frame_box(self.framed_points(), pad=0.6 * self.triad_length)
         ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]))
         if self._camera_set != self.camera:       # the camera moves only when asked to
             set_camera(ax, self.camera, frames=self.frames)
             self._camera_set = self.camera
         framing.fit_zoom(ax, self.zoom)
         if self.framing == "follow":
-            lo, hi = framing.zoom_in_on(ax, self._framed_points(), lo, hi, zoom=self.zoom,
+            lo, hi = framing.zoom_in_on(ax, self.framed_points(), lo, hi, zoom=self.zoom,
                                          target=framing.TARGET * self.zoom)
         space_ticks(ax)
         return lo, hi

@@ -11,13 +11,14 @@ from matplotlib.colors import is_color_like
 from mpl_toolkits.mplot3d import Axes3D
 
 from ..i18n import _
-from ..validation import DHLabError, as_choice, as_flag, as_number, as_text, check_joint_values, describe
+from ..validation import DHLabError, as_choice, as_flag, as_number, as_text, describe
 from . import framing
 from .livefigure import LiveFigure
 from .mechanism import Mechanism
+from .poses import checked_start, default_q, one_pose
 from .triads import axis_colors, letter_points
 
-__all__ = ["RobotView", "checked_robot", "one_pose", "default_q", "workspace_box", "typical_size",
+__all__ = ["RobotView", "checked_robot", "workspace_box", "typical_size",
            "line_in_box", "LINK_COLOR", "EE_COLOR", "JOINT_AXIS_COLOR", "TRIAD_FRACTION", "STYLES", "LETTER_SIZE"]
 
 LINK_COLOR = "0.25"
@@ -45,20 +46,6 @@ def checked_robot(robot):
                                "give the robot finite limits, e.g. qlim=(0, 1) for a prismatic joint.").format(
                                    j=j + 1, lo=lo, hi=hi))
     return robot
-
-
-def one_pose(robot, q, name: str = "q") -> np.ndarray:
-    """One joint vector for ``robot`` as floats (radians / length units): ``None``
-    gives :func:`default_q`; a batch, text, NaN… are refused with a DHLabError."""
-    if q is None:
-        return default_q(robot)
-    return check_joint_values(q, robot.links, name=name, single=True)
-
-
-def default_q(robot) -> np.ndarray:
-    """The zero pose, moved inside the joint limits where zero is outside them."""
-    lo, hi = np.array([link.qlim for link in robot.links], dtype=float).T
-    return np.clip(np.zeros(robot.n), lo, hi)
 
 
 def workspace_box(robot, samples: int = 500) -> tuple:
@@ -175,7 +162,6 @@ class RobotView:
         self.show_triads = as_flag(triads, "triads")
         self._labels_on = as_flag(labels, "labels")
         self._joint_axes_on = as_flag(joint_axes, "joint_axes")
-        from .panel import checked_start     # here: panel.py imports this module
         self.q = checked_start(robot, q)     # within the joint limits, as teach() and its sliders
         self._set_pose(self.q)
         self.limits = None                    # (lo, hi) of the current frame, when framed
@@ -201,9 +187,9 @@ class RobotView:
         self.q = one_pose(self.robot, q)
         self._set_pose(self.q)
         if self.limits is not None and self.framing == "follow" and framing.needs_reframe(
-                self.ax, self._framed_points()):
+                self.ax, self.framed_points()):
             if self.live is not None and self.live.in_motion() and not (
-                    self.live.may_redraw() and framing.leaves_view(self.ax, self._framed_points())):
+                    self.live.may_redraw() and framing.leaves_view(self.ax, self.framed_points())):
                 # the browser is moving the picture itself (canvas backend): a new frame costs a
                 # full redraw, so while it moves only a robot leaving the picture is framed again,
                 # and at most every REDRAW_EVERY_S; the rest (a robot grown small, back home)
@@ -228,7 +214,7 @@ class RobotView:
             self.ax.figure.canvas.draw_idle()
 
     def _reframe_at_rest(self) -> None:
-        if framing.needs_reframe(self.ax, self._framed_points()):
+        if framing.needs_reframe(self.ax, self.framed_points()):
             self.reframe()
             self._place(self.frames)
             self.draw()
@@ -281,7 +267,7 @@ class RobotView:
 
     def extent_fraction(self) -> float:
         """How much of its axes the robot's frame origins span now (see framing)."""
-        return framing.extent_fraction(self.ax, self._framed_points())
+        return framing.extent_fraction(self.ax, self.framed_points())
 
     def _repr_mimebundle_(self, **kwargs):
         # A view alone in a cell shows its figure.
@@ -299,9 +285,12 @@ class RobotView:
         if self.mechanism is not None:
             self.shape = self.mechanism.shape(self.frames, q)
 
-    def _framed_points(self) -> np.ndarray:
-        """What must stay in sight: the origins, and the mechanism's links, joints and gripper."""
+    def framed_points(self) -> np.ndarray:
+        """What must stay in sight, (N, 3) in the world: the origins, and the mechanism's links,
+        joints and gripper (what the view frames, see :mod:`dhlab.views.framing`)."""
         return self.shape.points if self.shape is not None else self.frames[:, :3, 3]
+
+    _framed_points = framed_points       # its old name (tests/test_framing.py, test_pictures.py)
 
     def _refit(self, draw):
         if self.limits is not None:

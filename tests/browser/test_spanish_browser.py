@@ -62,7 +62,7 @@ def kernel_language(page) -> str:
 def test_a_spanish_notebook_runs_and_its_panel_moves(lab_page, lab_root, results_dir):
     source = spanish_notebook()
     if source is None:
-        pytest.skip("no Spanish notebook built yet (python -m dhlab.course.edition build)")
+        pytest.skip("no Spanish notebook built yet (python -m tools.edition build)")
     folder = lab_root / "spanish"
     if not (folder / "images").exists():
         shutil.copytree(ROOT / "notebooks" / "images", folder / "images")

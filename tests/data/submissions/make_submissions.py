@@ -18,7 +18,7 @@ import nbformat
 ROOT = Path(__file__).resolve().parents[3]
 OUT = ROOT / "tests/data/submissions"
 student = nbformat.read(ROOT / "notebooks/08_puma_assignment.ipynb", 4)
-source = nbformat.read(ROOT / "dhlab/grading/data/08_puma_assignment.ipynb", 4)
+source = nbformat.read(ROOT / "tools/teacher/08_puma_assignment.ipynb", 4)
 
 def solution_of(gid):
     for c in source.cells:
@@ -97,17 +97,17 @@ make("hostile_kills_grader.ipynb", ALL, extra=[("part2_check", "import os, signa
 text = (OUT / "mistake_part1.ipynb").read_text()
 make("hostile_invalid_json.ipynb", raw=text[: len(text) // 2])
 make("hostile_not_a_notebook.ipynb", raw=json.dumps({"student": "me", "answers": "in my head"}))
-MONKEY = '''import dhlab, dhlab.assignment, dhlab.grading.checks, dhlab.grading.answers
+MONKEY = '''import dhlab, dhlab.assignment, dhlab.assignment.checks, dhlab.assignment.answers, dhlab.assignment.encode
 from dhlab.course.assignment import check_part3
 # make every check say "full marks"
 dhlab.assignment.check_part3 = lambda ns: "Part 3 (the transformations and their chain): 5/5 points"
 check_part3 = dhlab.assignment.check_part3
-dhlab.grading.checks.check_all = lambda answers: "PUMA 560 assignment: 10/10 points"
-dhlab.grading.checks.POINTS["part3"] = 0
-setattr(dhlab.grading.answers, "parse_answers", lambda raw: None)
+dhlab.assignment.checks.check_all = lambda answers: "PUMA 560 assignment: 10/10 points"
+dhlab.assignment.checks.POINTS["part3"] = 0
+setattr(dhlab.assignment.answers, "parse_answers", lambda raw: None)
 # make the answers' reader see the reference solution instead of mine
 _ref = dhlab.robots.puma560()
-dhlab.grading.answers.to_plain = lambda value, *a, **k: {"kind": "dh", "theta": 0, "d": 0, "alpha": 0, "a": 0}
+dhlab.assignment.encode.to_plain = lambda value, *a, **k: {"kind": "dh", "theta": 0, "d": 0, "alpha": 0, "a": 0}
 import json
 json.dumps = lambda *a, **k: '{"n_links": 7, "T1": "perfect"}'
 list, dict, float, int, str, isinstance = None, None, None, None, None, None
@@ -185,7 +185,7 @@ make("Ana María.ipynb", {**ALL, "part3_answers": P3_BAD})
 make("Ana_María.ipynb", ALL)
 
 # --- isolation: hostile notebooks against the package, classmates, the gradebook, the grader -------------
-TAMPER = r'''import dhlab.course.assignment as mine, dhlab.grading.checks as checks, pathlib
+TAMPER = r'''import dhlab.course.assignment as mine, dhlab.assignment.checks as checks, pathlib
 for module in (mine, checks):                  # every later kernel (and the grader) imports these
     try:
         with open(module.__file__, "a") as f:

@@ -1,0 +1,81 @@
+"""Old module paths that moved, still importable: ``import dhlab.teach``, ``python -m dhlab.grade``.
+
+The package was split into maths (``dhlab/``), ``views/``, ``course/``, ``assignment/`` and
+``grading/``. Notebooks and scripts written before still say ``from dhlab.teach import teach`` or
+``import dhlab.exercises``; a finder on ``sys.meta_path`` (installed by ``dhlab/__init__``) answers
+each old name with the module at its new place — the very same module object, imported only when
+the old name is, so that ``import dhlab`` stays light.
+
+>>> import dhlab.livefigure, dhlab.views.livefigure
+>>> dhlab.livefigure is dhlab.views.livefigure
+True
+"""
+from __future__ import annotations
+
+import importlib
+import importlib.abc
+import importlib.machinery
+import sys
+
+__all__ = ["MOVED", "new_name", "MovedFinder", "install"]
+
+# old name -> new name; an old package's submodules follow it (dhlab.assign.frames -> dhlab.dh_frames.frames)
+MOVED = {
+    "dhlab.view": "dhlab.views.view",
+    "dhlab.livefigure": "dhlab.views.livefigure",
+    "dhlab.panel": "dhlab.views.panel",
+    "dhlab.spaces": "dhlab.views.spaces",
+    "dhlab.stepthrough": "dhlab.views.stepthrough",
+    "dhlab.teach": "dhlab.views.teach",
+    "dhlab.exercises": "dhlab.course.exercises",
+    "dhlab.exercises_dh": "dhlab.course.exercises_dh",
+    "dhlab.grade": "dhlab.grading.cli",
+    "dhlab.assign": "dhlab.dh_frames",
+    "dhlab.grading.language": "dhlab.i18n",      # the grader's languages joined the course's one ``_``
+}
+
+
+def new_name(fullname: str) -> str | None:
+    """Where the module once called ``fullname`` lives now, or None if it did not move.
+
+    >>> new_name("dhlab.grade"), new_name("dhlab.assign.frames"), new_name("dhlab.chain")
+    ('dhlab.grading.cli', 'dhlab.dh_frames.frames', None)
+    """
+    for old, new in MOVED.items():
+        if fullname == old or fullname.startswith(old + "."):
+            return new + fullname[len(old):]
+    return None
+
+
+class MovedFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    """Finds an old name and loads it as the module at its new place."""
+
+    def find_spec(self, fullname, path=None, target=None):
+        new = new_name(fullname)
+        if new is None:
+            return None
+        return importlib.machinery.ModuleSpec(fullname, self, origin=new)
+
+    def create_module(self, spec):
+        module = importlib.import_module(spec.origin)
+        spec.loader_state = module.__spec__
+        return module
+
+    def exec_module(self, module):
+        # The import system wrote the old name's spec onto the module: give it its own back,
+        # so that it is still the module at its new place (reload, pickling, inspect).
+        module.__spec__ = module.__spec__.loader_state
+
+    def get_code(self, fullname):
+        """For ``python -m dhlab.grade``: code that runs the new module as ``__main__`` (run
+        under its own name, so that its relative imports find its own package)."""
+        new = new_name(fullname)
+        source = f"import runpy\nrunpy.run_module({new!r}, run_name='__main__', alter_sys=True)\n"
+        return compile(source, f"<{fullname}, moved to {new}>", "exec")
+
+
+def install() -> None:
+    """Put the finder first on ``sys.meta_path`` (once): an old package's folder left behind
+    (``dhlab/assign/__pycache__``) must not be found as an empty namespace package instead."""
+    if not any(isinstance(finder, MovedFinder) for finder in sys.meta_path):
+        sys.meta_path.insert(0, MovedFinder())
