@@ -8,7 +8,8 @@
 # Other targets: make lab-es (the same, JupyterLab's menus in Spanish), make edition (the Spanish
 # notebooks: catalogs updated, stale notebooks rebuilt, everything checked), make test-browser
 # (real-browser tier), make test-nbgrader (nbgrader accepts the PUMA source notebook), make bench
-# (benchmarks), make notebooks (re-execute them, both editions), make clean. The maintainers' tools
+# (benchmarks), make notebooks (re-execute them, both editions), make docs (the docs site, docs/_build/html),
+# make lint (ruff), make clean. The maintainers' tools
 # these run live in tools/ (python -m tools.edition, tools.execute, tools.i18n_catalog), never installed.
 
 PYTHON ?= python3
@@ -18,7 +19,7 @@ READY  := $(VENV)/.ready-$(shell cat pyproject.toml constraints.txt | cksum | cu
 # pytest-xdist runs the notebooks two at a time; --dist loadfile keeps one notebook on one worker
 XDIST  ?= -n 2 --dist loadfile
 
-.PHONY: setup lab lab-es edition test test-browser test-nbgrader bench notebooks clean
+.PHONY: setup lab lab-es edition test lint test-browser test-nbgrader bench notebooks clean
 
 setup: $(READY)
 
@@ -68,6 +69,10 @@ edition: $(READY)
 test: $(READY)
 	$(BIN)/python -m pytest $(XDIST)
 
+# ruff with the rules of pyproject.toml ([tool.ruff]): seconds; .ci/run runs it first
+lint: $(READY)
+	$(BIN)/python -m ruff check .
+
 # Every notebook in JupyterLab + Chromium (inline and ipympl), the teach panel in Voilà, the
 # key-to-pixels latency; screenshots and latency.json are left in tests/browser/results/.
 test-browser: $(READY)
@@ -83,7 +88,7 @@ screenshots: $(READY)
 # nbgrader is installed only for this tier (students and our grader do not need it)
 test-nbgrader: $(READY)
 	$(BIN)/python -m pip install --quiet -c constraints.txt nbgrader
-	PATH="$(CURDIR)/$(BIN):$$PATH" $(BIN)/python -m pytest tests/test_grading_nbgrader.py -p no:xdist
+	PATH="$(CURDIR)/$(BIN):$$PATH" $(BIN)/python -m pytest tests/grading/test_grading_nbgrader.py -p no:xdist
 
 bench: $(READY)
 	$(if $(RTB),$(BIN)/python -m pip install --quiet roboticstoolbox-python)
@@ -96,7 +101,7 @@ bench: $(READY)
 # notebooks/08_puma_assignment.ipynb and as the package's copy dhlab-assign starts from.
 notebooks: $(READY)
 	$(BIN)/python -m tools.execute $(filter-out notebooks/08_puma_assignment.ipynb notebooks/index.ipynb,$(wildcard notebooks/*.ipynb)) tools/teacher/08_puma_assignment.ipynb
-	$(BIN)/python -m dhlab.grading.generate
+	$(BIN)/python -m dhlab.grading.release.generate
 	$(BIN)/python -m tools.edition build
 
 # (never my-notebooks/: the student's answers)

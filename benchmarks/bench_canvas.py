@@ -40,7 +40,7 @@ def shown(backend: str, robot_name: str, dragged: bool = False):
     if backend == "canvas":
         widget.send = lambda content, buffers=None: None   # no front end here: the bytes go nowhere
         if dragged:                                        # a browser shows it (and has the rig)
-            widget._on_browser_message(widget, {"kind": "ready"}, [])
+            widget.receive({"kind": "ready"})
     return panel
 
 
@@ -70,7 +70,7 @@ def bench(backend: str, robot_name: str, steps: int, dragged: bool = False) -> d
            "step": statistics.median(step), "sweep": sweep_ms(backend, robot_name, dragged)}
     if backend == "canvas":
         row["rest"] = statistics.median(timed(lambda k: (setattr(live, "_agg_stale", True),
-                                                         send_rest(live, live._seq)), 15))
+                                                         send_rest(live, live.seq)), 15))
     panel.close()
     return row
 

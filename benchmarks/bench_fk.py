@@ -85,12 +85,12 @@ def main(argv=None):
     times = {name: [] for name in methods}
     outputs = {}
     for _ in range(args.repeat):
-        for name, (fn, count) in methods.items():
+        for name, (fn, _count) in methods.items():
             out, (t,) = timed(fn, 1)
             times[name].append(t)
             outputs[name] = out
     results = {}
-    for name, (fn, count) in methods.items():
+    for name, (_fn, count) in methods.items():
         err = float(np.abs(outputs[name] - reference[:count]).max())
         assert err < 1e-9, f"{name} disagrees with dhlab by {err}"
         rates = sorted(count / t for t in times[name])

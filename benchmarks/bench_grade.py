@@ -73,9 +73,9 @@ def make_variant_class(folder: Path, n: int) -> tuple:
     returns (extra grader arguments, expected score or (status, max score) per submission)."""
     import numpy as np
     sys.path.insert(0, str(ROOT / "tests"))
-    from test_grade_variants import released_robot, solved
+    from support.solved_notebooks import released_robot, solved
     from dhlab.assignment.model import random_valid_frames
-    from dhlab.grading import release as R
+    from dhlab.grading.release import notebooks as R
     secret = folder.parent / "secret.key"
     secret.write_bytes(b"benchmark-secret-0123456789abcdef\n")
     ids = [f"student_{i + 1:02d}" for i in range(n)]
@@ -169,7 +169,8 @@ def main(argv=None) -> int:
     parser.add_argument("--count", "--n", dest="count", type=int, default=30,
                         help="submissions of the -j JOBS run (default 30)")
     parser.add_argument("--jobs", type=int, default=2, help="parallel jobs of the main run (default 2)")
-    parser.add_argument("--serial", type=int, default=None, help="submissions of the -j 1 run (default: --count; 0: skip)")
+    parser.add_argument("--serial", type=int, default=None,
+                        help="submissions of the -j 1 run (default: --count; 0: skip)")
     parser.add_argument("--variants", type=int, default=30,
                         help="students of the personal-variants run (0: skip)")
     parser.add_argument("--json", type=Path, default=None, help="write the results here")

@@ -37,8 +37,8 @@ sys.path.insert(0, str(ROOT / "tests"))
 
 
 def _slips(robot, rows):
-    from test_variants import _row_mistakes
-    return [(i, what, row) for i, what, row in _row_mistakes(robot, rows) if row != rows[i]]
+    from support.written_answers import row_mistakes
+    return [(i, what, row) for i, what, row in row_mistakes(robot, rows) if row != rows[i]]
 
 
 def _named_offsets(message: str) -> set:
@@ -68,8 +68,8 @@ def _count_named(counts: dict, slipped: int, report) -> None:
 
 
 def sweep(per_family: int, pairs: int, seed: int) -> dict:
-    from test_variants import (_links_not_in_their_frames, _lost, _moves_like, _namespace_from_rows, _report,
-                               _rows_in_degrees)
+    from support.written_answers import (links_not_in_their_frames, lost as lost_items, moves_like,
+                                         namespace_from_rows, report, rows_in_degrees)
     from dhlab.assignment import variants as V
     from dhlab.assignment.family import family_names
     from dhlab.assignment.model import random_valid_frames
@@ -80,30 +80,30 @@ def sweep(per_family: int, pairs: int, seed: int) -> dict:
                   "d slips": 0, "names it alone": 0, "names it among others": 0, "names another only": 0,
                   "pairs": 0, "pairs as two": 0, "pairs as one": 0, "examples": []}
         started = time.monotonic()
-        for v in range(per_family // 12 + 1):
+        for _ in range(per_family // 12 + 1):
             robot = V.robot_of_variant(V.variant(key, int(rng.integers(1 << 30))))
             Q = np.vstack([np.zeros(robot.n)] + [[rng.uniform(max(lo, -3.0), min(hi, 3.0)) for lo, hi in robot.qlim]
                                                  for _ in range(6)])
             frames = random_valid_frames(robot, rng, slide=0.3)
-            rows = _rows_in_degrees(robot, frames)
+            rows = rows_in_degrees(robot, frames)
             slips = _slips(robot, rows)
             for idx in rng.choice(len(slips), size=min(12, len(slips)), replace=False):
                 if counts["slips"] >= per_family:
                     break
                 i, what, row = slips[idx]
                 changed = rows[:i] + [row] + rows[i + 1:]
-                ns = _namespace_from_rows(robot, changed, frames)
-                lost = _lost(_report(ns, robot))
+                ns = namespace_from_rows(robot, changed, frames)
+                lost = lost_items(report(ns, robot))
                 counts["slips"] += 1
-                if _moves_like(robot, changed, Q):
-                    expected = len(_links_not_in_their_frames(robot, ns, frames))
+                if moves_like(robot, changed, Q):
+                    expected = len(links_not_in_their_frames(robot, ns, frames))
                     counts["valid"] += 1
                     ok = len(lost) == expected
                 else:
                     expected = 1
                     ok = len(lost) == 1 and lost[0][0] == "part3"
                 if what == "d + 5 cm" and lost:
-                    _count_named(counts, i + 1, _report(ns, robot))
+                    _count_named(counts, i + 1, report(ns, robot))
                 if ok:
                     counts["one item"] += expected      # a valid chain whose frames did not move costs nothing
                 else:
@@ -120,9 +120,9 @@ def sweep(per_family: int, pairs: int, seed: int) -> dict:
                 one_a, one_b = rows[:i] + [ra] + rows[i + 1:], rows[:j] + [rb] + rows[j + 1:]
                 both = list(rows)
                 both[i], both[j] = ra, rb
-                if _moves_like(robot, one_a, Q) or _moves_like(robot, one_b, Q) or _moves_like(robot, both, Q):
+                if moves_like(robot, one_a, Q) or moves_like(robot, one_b, Q) or moves_like(robot, both, Q):
                     continue
-                lost = [x for x in _lost(_report(_namespace_from_rows(robot, both, frames), robot))
+                lost = [x for x in lost_items(report(namespace_from_rows(robot, both, frames), robot))
                         if x[0] == "part3"]
                 counts["pairs"] += 1
                 counts["pairs as two" if len(lost) >= 2 else "pairs as one"] += 1

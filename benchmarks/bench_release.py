@@ -44,7 +44,7 @@ def check(out: Path, ids) -> dict:
     records = json.loads((out / "_teacher" / "variants.json").read_text(encoding="utf-8"))
     prints = {}
     for sid in ids:
-        from dhlab.grading.release import safe_filename
+        from dhlab.grading.release.roster import safe_filename
         nb = json.loads((out / f"{safe_filename(sid)}.ipynb").read_text(encoding="utf-8"))
         result = V.verify(nb["metadata"][V.METADATA_KEY], sid, SECRET)
         if result.status != "ok" or records[sid] != nb["metadata"][V.METADATA_KEY]:
@@ -79,8 +79,8 @@ def main() -> int:
             seconds = run(path, out, secret, args.family, figures)
             prints[label] = check(out, ids[:n])
             size = sum(p.stat().st_size for p in out.glob("*.ipynb")) / n / 1e3
-            results[label] = {"students": n, "seconds": round(seconds, 2), "per_student_ms": round(1e3 * seconds / n, 1),
-                              "kb_per_notebook": round(size, 1)}
+            results[label] = {"students": n, "seconds": round(seconds, 2),
+                              "per_student_ms": round(1e3 * seconds / n, 1), "kb_per_notebook": round(size, 1)}
         if any(prints["default"][sid] != fp for sid, fp in prints["--figures"].items()):
             raise SystemExit("the two runs gave different variants")
     base = results["default"]["per_student_ms"]

@@ -162,7 +162,7 @@ class DHRobot(Robot):
     # --- tables typed from slides ---------------------------------------------------
     @classmethod
     def from_table(cls, rows, name: str = "robot", params=None, angles: str = "deg",
-                   qlim=None, **kwargs) -> "DHRobot":
+                   qlim=None, **kwargs) -> DHRobot:
         """A robot from rows ``(θ, d, a, α)`` typed as on the slides.
 
         Entries are numbers or text such as ``"q2 + 90"``, ``"θ3 - 90"``, ``"l1"``,

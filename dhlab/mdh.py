@@ -119,7 +119,7 @@ class MDHRobot(Robot):
 
     @classmethod
     def from_table(cls, rows, name: str = "robot", params=None, angles: str = "deg",
-                   qlim=None, **kwargs) -> "MDHRobot":
+                   qlim=None, **kwargs) -> MDHRobot:
         """A robot from modified-DH rows ``(θ_i, d_i, a_(i−1), α_(i−1))``, typed as for
         :meth:`dhlab.DHRobot.from_table` (same columns, text such as ``"q2 - 90"``, degrees
         by default). Craig prints the columns as α_(i−1), a_(i−1), d_i, θ_i: reorder them."""

@@ -104,8 +104,9 @@ def chain_product(matrices, deadline=None):
     T = matrices[0]
     for A in matrices[1:]:
         _check_time(deadline)
+        # (B023) sympy calls the lambda at once, with this turn's T and A: no late binding to fear
         T = sp.Matrix(T.rows, A.cols, lambda i, j: sp.Add(
-            *[T[i, k] * A[k, j] for k in range(T.cols) if T[i, k] != 0 and A[k, j] != 0]))
+            *[T[i, k] * A[k, j] for k in range(T.cols) if T[i, k] != 0 and A[k, j] != 0]))  # noqa: B023
     return T
 
 

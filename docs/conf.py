@@ -44,7 +44,7 @@ html_static_path: list[str] = []
 
 
 # A docstring may name a module or object that the API reference does not document (an internal
-# module such as dhlab.grading.sandbox, a private helper): that is not a broken reference as long as
+# module such as dhlab.grading.run.sandbox, a private helper): that is not a broken reference as long as
 # the name exists in the code, so it is shown as code, without a link. A name that exists nowhere (a
 # module moved or renamed since the docstring was written) stays a warning, so the build fails on it.
 def _exists(target: str, module: str | None, cls: str | None) -> bool:

@@ -210,7 +210,8 @@ def lock_entry(wheel: Path) -> dict:
     name, version = wheel.name.split("-")[:2]
     with zipfile.ZipFile(wheel) as archive:
         tops = {path.split("/")[0].removesuffix(".py") for path in archive.namelist()
-                if (path.endswith("/__init__.py") and path.count("/") == 1) or ("/" not in path and path.endswith(".py"))}
+                if (path.endswith("/__init__.py") and path.count("/") == 1)
+                or ("/" not in path and path.endswith(".py"))}
     key = canonical(name)
     if key not in DEPENDS:
         raise BuildError(f"lite/build.py has no `depends` for {name}: add it to DEPENDS")
@@ -297,15 +298,21 @@ def matplotlib_fontlist_wheel(pyodide: Path) -> Path:
                if e["name"] == "matplotlib"][0]["version"]
     name = f"matplotlib_fontlist-{version}"
     wheel = pyodide / f"{name}-py3-none-any.whl"
+    metadata = f"Metadata-Version: 2.1\nName: matplotlib-fontlist\nVersion: {version}\n"
+    wheel_info = "Wheel-Version: 1.0\nGenerator: dhlab lite/build.py\nRoot-Is-Purelib: true\nTag: py3-none-any\n"
     files = {"matplotlib/fontlist.json": json_path.read_bytes(),
-             f"{name}.dist-info/METADATA": f"Metadata-Version: 2.1\nName: matplotlib-fontlist\nVersion: {version}\n".encode(),
-             f"{name}.dist-info/WHEEL": b"Wheel-Version: 1.0\nGenerator: dhlab lite/build.py\nRoot-Is-Purelib: true\nTag: py3-none-any\n"}
+             f"{name}.dist-info/METADATA": metadata.encode(),
+             f"{name}.dist-info/WHEEL": wheel_info.encode()}
     return write_wheel(wheel, name, files)
 
 
 def write_wheel(path: Path, name: str, files: dict) -> Path:
     """A wheel of ``files`` ({path: bytes}) with its RECORD; the same bytes on every build."""
-    record = "".join(f"{p},sha256={base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b'=').decode()},{len(data)}\n"
+    def digest(data: bytes) -> str:
+        """A sha256 as RECORD writes it: urlsafe base64 without the padding (the wheel format)."""
+        return base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b"=").decode()
+
+    record = "".join(f"{p},sha256={digest(data)},{len(data)}\n"
                      for p, data in files.items()) + f"{name}.dist-info/RECORD,,\n"
     files = {**files, f"{name}.dist-info/RECORD": record.encode()}
     with zipfile.ZipFile(path, "w") as archive:

@@ -1,7 +1,7 @@
 """Shared fixtures (the verified seed cases, one grading batch at a time); nbval's kernels on
 private Unix sockets.
 
-Why the sockets: see tests/kernelsockets.py (the flaky "Kernel didn't respond in 60 seconds").
+Why the sockets: see tests/support/kernelsockets.py (the flaky "Kernel didn't respond in 60 seconds").
 """
 import fcntl
 import os
@@ -11,8 +11,11 @@ import tempfile
 import pytest
 from hypothesis import settings
 
-from kernelsockets import PrivateSocketKernelManager
-from seeddata import load_cases
+from support.kernelsockets import PrivateSocketKernelManager
+from support.seeddata import load_cases
+
+# the browser tiers' Chromium (tests/browser, tests/lite: each asks for it with its own chromium_args)
+pytest_plugins = ["support.browser_tiers"]
 
 
 def _private_sockets_for_nbval():
@@ -42,8 +45,8 @@ def cases():
 def one_batch_at_a_time():
     """Hold a lock while a module grades a class, so the other pytest worker's batch waits.
 
-    Two graders at once are safe (each locks its own kernel users: dhlab.grading.isolation.claim;
-    tests/test_grading_isolation.py proves it), but a test that asserts "no kernel of the grader
+    Two graders at once are safe (each locks its own kernel users: dhlab.grading.run.isolation.claim;
+    tests/grading/test_grading_isolation.py proves it), but a test that asserts "no kernel of the grader
     is left running" cannot tell its own batch's kernels from the other worker's."""
     with open(os.path.join(tempfile.gettempdir(), "dhlab-tests-one-batch.lock"), "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
@@ -55,7 +58,7 @@ def package(one_batch_at_a_time):
     """dhlab copied into a folder every user can read, for a module's grader runs (PYTHONPATH):
     a submission that tampers with "the installed dhlab" touches only the copy, and no one editing
     this working tree disturbs the grader's check that its package is unchanged."""
-    from test_grading_runner import _package_copy
-    folder = _package_copy()
+    from support.grader import package_copy
+    folder = package_copy()
     yield folder
     shutil.rmtree(folder, ignore_errors=True)

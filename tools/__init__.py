@@ -12,7 +12,7 @@
 * :mod:`tools.execute`: stored outputs exactly what the code computes;
 * :mod:`tools.student_copy`: ``my-notebooks/``, where a student works (``make lab``);
 * ``tools/teacher/08_puma_assignment.ipynb``: the assignment with its solutions (the teacher's source
-  notebook; ``python -m dhlab.grading.generate`` makes the student notebook from it).
+  notebook; ``python -m dhlab.grading.release.generate`` makes the student notebook from it).
 
 They reach into the repository (``notebooks/``, ``tools/locale/``) on purpose: that is where they work.
 The package ``dhlab`` never imports them.

@@ -44,7 +44,7 @@ __all__ = ["NOTEBOOKS", "EDITION_NOTEBOOKS", "SHIPPED", "Edition", "EditionError
 
 ROOT = Path(__file__).resolve().parents[1]          # the repository: this tool works there
 # the notebooks with a Spanish edition (08, the assignment, too: dhlab-assign releases each student's
-# personal notebook from it with --language es, see dhlab.grading.release_language)
+# personal notebook from it with --language es, see dhlab.grading.release.language)
 NOTEBOOKS = ["01_start_here", "02_homogeneous_matrices", "03_robot_no_tan_elemental",
              "04_pr_mechanism_and_spaces", "05_dh_convention", "06_dh_examples", "07_ssrms",
              "08_puma_assignment", "09_sources_and_errata"]
@@ -53,7 +53,7 @@ EDITION_NOTEBOOKS = ["01_start_here", "02_homogeneous_matrices", "03_robot_no_ta
                      "04_pr_mechanism_and_spaces",
                      "05_dh_convention", "06_dh_examples", "07_ssrms", "08_puma_assignment",
                      "09_sources_and_errata"]
-# the notebooks whose translations the package reads at run time (dhlab.grading.release_language)
+# the notebooks whose translations the package reads at run time (dhlab.grading.release.language)
 SHIPPED = ["08_puma_assignment"]
 
 SET_LANGUAGE_EN = 'dhlab.set_language("en")'

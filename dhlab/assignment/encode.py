@@ -1,6 +1,6 @@
 """What crosses from the student's kernel to the grader: the answers' names and values as JSON.
 
-After a submission has run, the grader's runner (:mod:`dhlab.grading.runner`) asks the
+After a submission has run, the grader's runner (:mod:`dhlab.grading.run.runner`) asks the
 student's kernel to write the values of the answer names (:data:`ANSWER_NAMES`) as JSON
 text, with :func:`to_plain` and :func:`encode_json`. It sends **the source text** of these
 two functions into the kernel, so nothing the notebook did to ``dhlab`` (or to ``json``)

@@ -12,7 +12,8 @@ where it is typed, with the fix.
 >>> degrees("90", "α in Tx[α, a]")
 Traceback (most recent call last):
 ...
-dhlab.validation.DHLabError: α in Tx[α, a] = '90' is not a valid number: it is text: write the number without quotes (e.g. 0.5, not '0.5').
+dhlab.validation.DHLabError: α in Tx[α, a] = '90' is not a valid number: it is text:
+    write the number without quotes (e.g. 0.5, not '0.5').
 """
 from __future__ import annotations
 

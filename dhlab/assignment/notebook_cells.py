@@ -166,7 +166,8 @@ def _own_robot_text(text: str, robot, name: str) -> str:
     rules = [
         (r"a real six-joint arm", f"a real {word}-joint arm"),
         (r"configuration of the PUMA\s+robot\*\*", f"configuration of a robot**, here your own {name}"),
-        (r"The PUMA 560 has \d+ revolute joints and \d+ links", f"Your {name} has {n} joints ({kinds}) and {n + 1} links"),
+        (r"The PUMA 560 has \d+ revolute joints and \d+ links",
+         f"Your {name} has {n} joints ({kinds}) and {n + 1} links"),
         (r"\bfive words\b", f"{_WORDS.get(n - 1, str(n - 1))} words"),
         (r"\$z_6\$ along \$z_5\$, \$x_6\$", f"$z_{n}$ along $z_{{{n - 1}}}$, $x_{n}$"),
         (r"^q1, q2, q3, q4, q5, q6 = joint_variables\(6\)",
@@ -236,7 +237,8 @@ def _part2_stub(robot, source: str) -> str | None:
     comments = _comments_only(source)
     if comments is None:
         return None
-    links = [f"link {k}: " + ", ".join(name for name, _point in link) + (" (in frame 0, the world frame)" if k == 0 else "")
+    links = [f"link {k}: " + ", ".join(name for name, _point in link)
+             + (" (in frame 0, the world frame)" if k == 0 else "")
              for k, link in enumerate(robot.points)]
     rows, row = [], "#  "
     for item in links:
@@ -356,6 +358,7 @@ def prepare_submission(nb: dict, variant, student_id: str) -> dict:
         cells[found[0]] = seam
     else:
         setup = _find(cells, "setup")
-        setup = setup if setup is not None else next((i for i, c in enumerate(cells) if c.get("cell_type") == "code"), -1)
+        if setup is None:
+            setup = next((i for i, c in enumerate(cells) if c.get("cell_type") == "code"), -1)
         cells.insert(setup + 1, seam)
     return nb

@@ -255,9 +255,10 @@ def _fit_loose(family: FrameFamily, base, P, W) -> tuple:
     U = (W - base[:3, 3]) @ base[:3, :3]
     phis = []
     for p, u in ((P[:, :2] - P[:, :2].mean(axis=0), U[:, :2] - U[:, :2].mean(axis=0)), (P[:, :2], U[:, :2])):
-        num, den = float(np.sum(p[:, 0] * u[:, 1] - p[:, 1] * u[:, 0])), float(np.sum(p[:, 0] * u[:, 0] + p[:, 1] * u[:, 1]))
+        num = float(np.sum(p[:, 0] * u[:, 1] - p[:, 1] * u[:, 0]))
+        den = float(np.sum(p[:, 0] * u[:, 0] + p[:, 1] * u[:, 1]))
         phis.append(math.atan2(num, den) if abs(num) + abs(den) > 1e-12 else 0.0)
-    (px, py), (ux, uy) = P[:, :2].mean(axis=0), U[:, :2].mean(axis=0)
+    (_px, py), (ux, uy) = P[:, :2].mean(axis=0), U[:, :2].mean(axis=0)
     r = math.hypot(ux, uy)
     if r > 1e-12:                                  # uy·cos φ − ux·sin φ = py: the offset along x
         beta, gamma = math.atan2(ux, uy), math.acos(max(-1.0, min(1.0, py / r)))

@@ -110,7 +110,7 @@ class Variant:
                         "base": dict(self.base)})
 
     @classmethod
-    def from_dict(cls, data) -> "Variant":
+    def from_dict(cls, data) -> Variant:
         """The variant a dict describes, checked: every problem is a clear DHLabError."""
         return _read_variant(data)
 
@@ -169,7 +169,7 @@ def variant(family: str, seed) -> Variant:
 def _draw_once(s, draw: _Draw) -> Variant:
     scale = draw.choice(SCALES)
     lengths = {}
-    for j, (kind, _theta, d, a, _alpha) in enumerate(s.rows, start=1):
+    for j, (_kind, _theta, d, a, _alpha) in enumerate(s.rows, start=1):
         for name, value in ((f"d{j}", d), (f"a{j}", a)):
             if value:
                 lengths[name] = _round_length(value * scale * (0.9 + 0.2 * draw.uniform()))
@@ -410,8 +410,9 @@ def verify(record, student_id: str, secret: bytes, roster_ids=()) -> Verificatio
         [r for r in roster_ids if r != student_id and r != claimed]
     for other in others:
         if hmac.compare_digest(_mac(data, other, secret), signature):
-            return Verification("other_student", _("this is the variant signed for {other!r}, not for {student!r}").format(
-                other=other, student=student_id), None, other)
+            why = _("this is the variant signed for {other!r}, not for {student!r}").format(
+                other=other, student=student_id)
+            return Verification("other_student", why, None, other)
     return Verification("tampered", _("the signature does not match: the variant or the id was changed, "
                                       "or it was signed with another secret"))
 

@@ -128,7 +128,8 @@ class Placer:
                 x = x_prev
                 why = _("{za} and {zb} are the same line{sense}: a{i} = 0, and x{i} and O{i} are free").format(
                     za=za, zb=zb, sense=sense, i=i)
-                x_choice = _("x{i} = x{previous} (no turn about {za}: θ{i} offset 0)").format(i=i, previous=i - 1, za=za)
+                x_choice = _("x{i} = x{previous} (no turn about {za}: θ{i} offset 0)").format(
+                    i=i, previous=i - 1, za=za)
         step = FrameStep(i, "6-8", case, kind, why, origin_choice, x_choice, origin, x, b.direction, notes=notes)
         return _frame(origin, x, b.direction), step
 

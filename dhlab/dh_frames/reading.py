@@ -51,9 +51,10 @@ def read_axes(axes) -> list:
         if not isinstance(kind, str) or kind not in ("R", "P"):
             hint = " " + (_("Write it in capitals: {kind!r}.").format(kind=kind.upper())
                           if isinstance(kind, str) and kind in ("r", "p") else
-                          _("'R' is a revolute joint (it turns about the axis), 'P' a prismatic one (it slides along it)."))
-            raise DHLabError(_("{where} kind must be 'R' or 'P', got {value}.").format(where=where, value=short_repr(kind))
-                             + hint)
+                          _("'R' is a revolute joint (it turns about the axis), "
+                            "'P' a prismatic one (it slides along it)."))
+            raise DHLabError(_("{where} kind must be 'R' or 'P', got {value}.").format(
+                where=where, value=short_repr(kind)) + hint)
         u = u / size                                   # first to about 1: no overflow in the norm of (0, 0, 1e308)
         lines.append((p, u / np.linalg.norm(u), kind))
     return lines

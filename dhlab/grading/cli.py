@@ -2,27 +2,27 @@
 
     dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv [-j N] [--timeout S] [--resume]
                 [--secret-file KEY --release RELEASE_DIR [--fallback roster|none]] [--language en|es]
-    dhlab-grade export gradescope|try-gradescope|canvas|moodle ...   (dhlab.grading.export)
-    dhlab-grade --clean                    (remove what a killed grader left: dhlab.grading.cleanup)
+    dhlab-grade export gradescope|try-gradescope|canvas|moodle ...   (dhlab.grading.export.command)
+    dhlab-grade --clean                    (remove what a killed grader left: dhlab.grading.run.cleanup)
     python -m dhlab.grading.cli puma SUBMISSIONS_DIR ...          (the same)
 
 Every ``*.ipynb`` under SUBMISSIONS_DIR (any depth, e.g. nbgrader's
 ``submitted/<student>/<assignment>/``) is one submission. What happens:
 
-1. **Every submission is copied first**, without its outputs (:mod:`dhlab.grading.staging`),
+1. **Every submission is copied first**, without its outputs (:mod:`dhlab.grading.run.staging`),
    into a folder only the grader can enter; nothing runs before all are copied.
-2. **The grader checks itself** (:mod:`dhlab.grading.selfcheck`): the teacher's solution is
+2. **The grader checks itself** (:mod:`dhlab.grading.run.selfcheck`): the teacher's solution is
    run exactly as the submissions' will be, under the same limits (``--memory-mb`` included),
    and must earn full marks; if it cannot, the grader stops with one message (which user
    cannot enter which folder, or which memory limit is too small and one that worked, what
    to do), exit code 5, and grades nothing.
-3. Each copy is run by its own runner process (:mod:`dhlab.grading.runner`) in a fresh
+3. Each copy is run by its own runner process (:mod:`dhlab.grading.run.runner`) in a fresh
    kernel with a time limit per cell (``--timeout``), a limit for the whole notebook, a
    memory limit and an output limit; ``-j N`` runs N at a time. As root, each kernel
    runs as an unprivileged user of its own, in its own folder
-   (:mod:`dhlab.grading.isolation`), and every process of that user is killed afterwards.
+   (:mod:`dhlab.grading.run.isolation`), and every process of that user is killed afterwards.
 4. The runner only returns the student's answers as plain data; they are scored
-   **here**, in the grader's process, by :mod:`dhlab.grading.checks`.
+   **here**, in the grader's process, by :mod:`dhlab.assignment.checks`.
 5. Before and after each submission the whole installed ``dhlab`` is checked
    unchanged; if it changed, the grader stops with a message (the rows it can
    trust are kept).
@@ -44,7 +44,7 @@ A submission that raises, hangs, floods its output, runs out of memory, is not a
 notebook, or tampers with dhlab gets the marks its real answers earn and a reason in
 ``status``; it never stops the batch. A fault of the grader's is never a score: a kernel
 that ran out of the memory the teacher set before any answer was read, a copy removed
-before it ran, a cell of the assignment stopped (:func:`dhlab.grading.rows.grade_submission`)
+before it ran, a cell of the assignment stopped (:func:`dhlab.grading.book.submission_row.grade_submission`)
 give a row with no score, "grader error: <cause and what to change>", graded again by
 ``--resume``.
 
@@ -56,7 +56,7 @@ it will be graded against, and the checks score against that robot; ``--release`
 release folder) gives the roster and every student's released variant, the fallback for a
 missing, tampered or classmate's record (``--fallback roster``, the default with
 ``--release``; ``none``: no marks). The rules, and the gradebook's five variant columns:
-:mod:`dhlab.grading.grade_variants`. Without ``--secret-file`` every submission is
+:mod:`dhlab.grading.book.grade_variants`. Without ``--secret-file`` every submission is
 graded against the PUMA 560, as before.
 
 **Languages.** A class may mix English and Spanish notebooks (``dhlab-assign release --language``,
@@ -82,10 +82,10 @@ import time
 from pathlib import Path
 
 from ..i18n import _
-from .launch import Stopped, allow_runs, run_submission, stop_all
-from .progress import Progress, _summary
-from .rows import _error_row, grade_submission
-from .staging import find_submissions
+from .run.launch import Stopped, allow_runs, run_submission, stop_all
+from .book.progress import Progress, summary
+from .book.submission_row import error_row, grade_submission
+from .run.staging import find_submissions
 
 __all__ = ["main", "grade_submission", "find_submissions", "run_submission"]
 
@@ -110,7 +110,7 @@ class _Batch:
         self.written = False                        # the gradebook rewritten by this run yet
 
     def package_unchanged(self) -> bool:
-        from .isolation import changed_files
+        from .run.isolation import changed_files
         with self.lock:
             if self.stop.is_set():
                 return False
@@ -133,7 +133,7 @@ class _Batch:
             return False
 
     def add(self, row, started, ended) -> None:
-        from .gradebook import write_atomic
+        from .book.gradebook import write_atomic
         with self.lock:
             text = row.pop("_feedback_text")
             row.pop("_part_text", None)
@@ -157,7 +157,7 @@ class _Batch:
                                                                         why=exc.strerror or exc)
 
     def _write(self) -> None:
-        from .gradebook import write_csv
+        from .book.gradebook import write_csv
         write_csv(self.options.output, self.rows.values(), self.options.columns)
         self.written = True
 
@@ -165,7 +165,7 @@ class _Batch:
 class _Interrupts:
     """What Ctrl-C (SIGINT) does while the grader runs. The first: no new submission starts and the
     running ones finish (before the batch: it stops at once); the second (or SIGTERM): the running
-    ones are stopped too (:func:`dhlab.grading.launch.stop_all`), and their rows are not written.
+    ones are stopped too (:func:`dhlab.grading.run.launch.stop_all`), and their rows are not written.
     Either way the grader then removes its copies and kernels' folders, says how to resume, and
     exits with 130. Before, one Ctrl-C graded to the end and a second turned correct notebooks
     into zeros that ``--resume`` kept."""
@@ -218,7 +218,7 @@ def _grade_one(batch, staged, iso):
         batch.stopped.append(staged.submission)
         return None
     except Exception as exc:                      # never stop the batch
-        row = _error_row(staged, exc)
+        row = error_row(staged, exc)
     ended = time.monotonic()
     if not batch.package_unchanged():
         batch.discarded.append(staged.submission)
@@ -234,10 +234,10 @@ def _grade_one(batch, staged, iso):
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     if argv[:1] == ["--clean"]:                   # what a killed grader left behind (cleanup.py)
-        from .cleanup import main as clean
+        from .run.cleanup import main as clean
         return clean()
     if argv[:1] == ["export"]:                    # Gradescope's autograder.zip, LMS gradebooks
-        from .export import main as export
+        from .export.command import main as export
         return export(argv[1:])
     return grade(argv)
 
@@ -245,7 +245,7 @@ def main(argv=None) -> int:
 def grade(argv) -> int:
     """``dhlab-grade puma SUBMISSIONS -o gradebook.csv …`` (see the module), in the teacher's language
     (``--language``, else ``DHLAB_LANGUAGE``, else English): its help, messages, statuses and summary;
-    each feedback file is in its student's language (:mod:`dhlab.grading.rows`)."""
+    each feedback file is in its student's language (:mod:`dhlab.grading.book.submission_row`)."""
     from ..i18n import as_teacher
     return as_teacher("dhlab-grade", argv, _grade)
 
@@ -304,7 +304,7 @@ def _parse_and_grade(argv, interrupts) -> int:
                      "the notebooks were released with)")
     resolve = None
     if options.secret_file is not None:
-        from . import grade_variants as GV
+        from .book import grade_variants as GV
         from ..validation import DHLabError
         try:
             variant_setup = GV.setup(options.secret_file, options.release, options.fallback)
@@ -312,7 +312,7 @@ def _parse_and_grade(argv, interrupts) -> int:
             print(f"dhlab-grade: error: {exc}", file=sys.stderr)
             return 2
         resolve = functools.partial(GV.resolve, variant_setup)
-    from .gradebook import COLUMNS, VARIANT_COLUMNS
+    from .book.gradebook import COLUMNS, VARIANT_COLUMNS
     options.columns = VARIANT_COLUMNS if resolve is not None else COLUMNS
     folder = options.submissions
     if not folder.is_dir():
@@ -348,11 +348,12 @@ def _cannot_write(output: Path) -> str:
 def _run_batch(argv, options, folder, paths, feedback_dir, resolve, interrupts) -> int:
     """Stage, check the grader, grade every submission, and say what happened (exit code)."""
     from ..assignment import checks  # noqa: F401  (imported before any student code runs)
-    from . import grade_variants  # noqa: F401
-    from .gradebook import assignment_cells, read_csv
-    from .isolation import file_digests, setup
-    from . import cleanup, selfcheck
-    from .staging import stage_all
+    from .book import grade_variants  # noqa: F401
+    from .book.gradebook import assignment_cells, read_csv
+    from .run.isolation import file_digests, setup
+    from .run import cleanup
+    from .run import selfcheck
+    from .run.staging import stage_all
     held = cleanup.hold()                         # dhlab-grade --clean leaves this grader's folders alone  # noqa: F841
     checks.check_all(checks.Answers())            # build the reference before any student code runs
     assignment_cells()                            # and read the assignment's own cells
@@ -421,7 +422,7 @@ def _grade_all(batch, todo, iso) -> tuple:
 def _report(argv, options, feedback_dir, batch, todo, graded, elapsed, jobs, keep, removed) -> int:
     """The summary at the end of a batch, and its exit code (0, 3 stopped, 130 interrupted)."""
     if graded:
-        print(_summary(graded, elapsed, jobs), file=sys.stderr)
+        print(summary(graded, elapsed, jobs), file=sys.stderr)
     if keep:
         print(_("Resumed: {count} rows kept from {gradebook}.").format(count=len(keep), gradebook=options.output),
               file=sys.stderr)
@@ -446,7 +447,7 @@ def _plan(old, staged, resume) -> tuple:
     whose file is gone from the folder is kept too, its status marked :data:`REMOVED` (its feedback
     file is still there; dropping it silently lost a grade). Without ``--resume`` every submission is
     graded again and the removed ones are only reported."""
-    from .gradebook import REMOVED, grade_again
+    from .book.gradebook import REMOVED, grade_again
     present = {s.submission for s in staged}
     removed = [r for r in old if r["submission"] not in present]
     if not resume:
@@ -463,7 +464,7 @@ def _plan(old, staged, resume) -> tuple:
 
 def _removed_text(removed, resume) -> str:
     """The summary's line on the submissions removed since the last run (none is dropped silently)."""
-    from .gradebook import REMOVED
+    from .book.gradebook import REMOVED
     names = ", ".join(r["submission"] for r in removed[:20]) + (", …" if len(removed) > 20 else "")
     if resume:
         return _("Removed since the last run ({count}): {names}. Their rows are kept, their status starting "

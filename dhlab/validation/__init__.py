@@ -48,7 +48,8 @@ raise, :class:`DHLabError`, lives in :mod:`dhlab.errors`.
 >>> as_angle(30, "theta")
 Traceback (most recent call last):
 ...
-dhlab.validation.DHLabError: theta = 30 rad is more than a full turn: angles are in radians. If you meant 30 degrees, pass dhlab.deg2rad(30).
+dhlab.validation.DHLabError: theta = 30 rad is more than a full turn: angles are in radians.
+    If you meant 30 degrees, pass dhlab.deg2rad(30).
 """
 from __future__ import annotations
 

@@ -11,7 +11,8 @@ Part of :mod:`dhlab.validation` (import from there).
 >>> check_joint_values([0.1, deg2rad(30)], links)
 Traceback (most recent call last):
 ...
-dhlab.validation.DHLabError: q[1] = deg2rad(30) is an angle, but joint 2 is prismatic: give its displacement as a length (in the robot's unit).
+dhlab.validation.DHLabError: q[1] = deg2rad(30) is an angle, but joint 2 is prismatic:
+    give its displacement as a length (in the robot's unit).
 """
 from __future__ import annotations
 

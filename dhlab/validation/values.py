@@ -185,8 +185,8 @@ def as_tolerance(x, name: str = "tol", upper: float = 1e-2, zero: bool = False) 
     value = as_number(x, name)
     if not (0 <= value if zero else 0 < value) or value > upper:
         low = "≥ 0" if zero else "> 0"
-        raise DHLabError(_("{name} must be a small number {low} and at most {upper:g} (e.g. 1e-9), got {value}.").format(
-            name=name, low=low, upper=upper, value=describe(x)))
+        raise DHLabError(_("{name} must be a small number {low} and at most {upper:g} (e.g. 1e-9), "
+                           "got {value}.").format(name=name, low=low, upper=upper, value=describe(x)))
     return value
 
 
@@ -198,7 +198,8 @@ def as_index(x, name: str, lo: int, hi: int) -> int:
             name=name, lo=lo, hi=hi, value=describe(x)))
     value = int(x)
     if not lo <= value <= hi:
-        raise DHLabError(_("{name} must be from {lo} to {hi}, got {value}.").format(name=name, lo=lo, hi=hi, value=value))
+        raise DHLabError(_("{name} must be from {lo} to {hi}, got {value}.").format(
+            name=name, lo=lo, hi=hi, value=value))
     return value
 
 

@@ -8,7 +8,7 @@
 // here, with mplot3d's own maths (viewMatrix below), and the final view goes back to Python.
 //
 // The maths (viewMatrix, compose, project, depthOrder, dragView) uses no DOM, so node can
-// import this file and tests/test_canvas_js.py checks it against matplotlib.
+// import this file and tests/views/test_canvas_js.py checks it against matplotlib.
 
 import { differsFromFullPaint, paintedBounds, union } from "./dirty.js";
 import { coversAll, rigged, sameQ, slidersQ, spaceOut } from "./rig.js";

@@ -8,7 +8,7 @@
 // what is outside both did not change.
 //
 // A rectangle is [x0, y0, x1, y1] in canvas pixels; null when nothing is painted.
-// No DOM here: node imports this file (tests/test_canvas_js.py checks that every pixel a paint
+// No DOM here: node imports this file (tests/views/test_canvas_js.py checks that every pixel a paint
 // touches lies inside the rectangle, for every catalogue robot).
 
 const MITER_LIMIT = 10;       // the canvas default: a miter joint reaches miterLimit * width / 2

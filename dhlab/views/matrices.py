@@ -14,7 +14,7 @@ sub/superscripts count 0.7 of their size, a matrix is the sum of its widest
 column entries plus 1 em between columns, and :data:`PX_PER_EM` turns em into
 pixels. ``PX_PER_EM`` was measured on JupyterLab 4 (MathJax 3, Chromium, 1400 px
 window) from four outputs whose rendered widths were measured in the browser
-(1172, 2025, 1082 and 1338 px; tests/test_matrices.py keeps the estimate
+(1172, 2025, 1082 and 1338 px; tests/views/test_matrices.py keeps the estimate
 between 3 % narrower and 12 % wider than each; it errs wide on purpose).
 
 >>> import sympy as sp
@@ -115,7 +115,8 @@ def _linear_em(s: str) -> float:
                 if "matrix" in env:
                     w += _matrix_em(body)
                 else:                    # aligned, gathered: lines one under the other, & aligned
-                    w += _matrix_em(body) - _BRACKETS - _COLSEP * len(_split_top(_split_top(body, r"\\")[0], "&")) + _COLSEP
+                    columns = len(_split_top(_split_top(body, r"\\")[0], "&"))     # the first line's, between its &s
+                    w += _matrix_em(body) - _BRACKETS - _COLSEP * columns + _COLSEP
                 i = end + len(r"\end{" + env + "}")
             elif cmd == "frac":
                 num, i = _group(s, i)

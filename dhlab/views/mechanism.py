@@ -119,7 +119,7 @@ class Mechanism:
         self._cylinder = cylinder(CYLINDER_RADIUS * s, CYLINDER_HALF * s)
         self.faces_per_joint = len(self._cylinder)
         solids, colors, alphas = [], [], []
-        for j, factors in enumerate(self.links):
+        for factors in self.links:
             kind, _, value, _, sign = next(f for f in factors if f[3])
             if kind == "R":
                 solids.append(self._cylinder)

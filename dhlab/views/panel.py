@@ -94,7 +94,8 @@ def view_controls(view, run=None) -> list:
         rows.append(camera)
     zoom = widgets.FloatSlider(value=view.zoom, min=0.5, max=3.0, step=0.05, description=_("zoom"),
                                readout_format=".2f", continuous_update=False,
-                               style={"description_width": "3em"}, layout=widgets.Layout(width=control_width(SLIDER_PX)))
+                               style={"description_width": "3em"},
+                               layout=widgets.Layout(width=control_width(SLIDER_PX)))
     zoom.observe(changed(view.set_zoom), names="value")
     rows.append(zoom)
     toggles = []

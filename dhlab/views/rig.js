@@ -5,7 +5,7 @@
 // this module computes every node of the chain (world, then the running product after each
 // step), and moves each rigged point to node * local: the picture moves in the animation frame
 // of the slider; the sliders then need to tell the kernel less often (spaceOut). No DOM here:
-// node imports this file and tests/test_rig.py checks it against Python (every catalogue robot,
+// node imports this file and tests/views/test_rig.py checks it against Python (every catalogue robot,
 // random poses).
 
 // node k as a row-major 4x4 in nodes[16k .. 16k+15]; node 0 is the world (identity)

@@ -270,7 +270,7 @@ def faces3d(polys) -> np.ndarray:
     if hasattr(polys, "_faces"):
         faces = np.array(polys._faces, dtype=float)
         if faces.ndim != 3:
-            raise Unsupported("Poly3DCollection faces of shape {}".format(faces.shape))
+            raise Unsupported(f"Poly3DCollection faces of shape {faces.shape}")
         faces[np.broadcast_to(np.asarray(polys._invalid_vertices), faces.shape[:2])] = np.nan
         return faces
     if not hasattr(polys, "_vec"):

@@ -111,8 +111,8 @@ class TeachPanel(Panel):
         self.matrix = widgets.HTML()
         extra = view_controls(self.view, run=lambda action, value: self.run(action, value)) \
             if controls else []
-        super().__init__(live, [widgets.HTML(_("<b>{name}</b>: joints (<i>articulaciones</i>)").format(name=robot.name)),
-                                *rows, self.readout, self.matrix, *extra])
+        title = widgets.HTML(_("<b>{name}</b>: joints (<i>articulaciones</i>)").format(name=robot.name))
+        super().__init__(live, [title, *rows, self.readout, self.matrix, *extra])
         self._refresh()
         self.observe_values(self.sliders, self._refresh)
         follow_sliders(self.view, self.sliders)

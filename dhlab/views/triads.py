@@ -93,8 +93,8 @@ def draw_triad(ax, T, length: float, label: str | None = None, letters: bool = T
     T = as_matrix4(T, "draw_triad's pose T")
     length = as_length(length, "draw_triad's length")
     if not length > 0:
-        raise DHLabError(_("draw_triad's length must be positive (the axes' length in data units), got {length:g}.").format(
-            length=length))
+        raise DHLabError(_("draw_triad's length must be positive (the axes' length in data units), "
+                           "got {length:g}.").format(length=length))
     colors = axis_colors() if colors is None else colors
     three_d = getattr(ax, "name", "") == "3d"
     artists = []

@@ -290,8 +290,6 @@ class RobotView:
         joints and gripper (what the view frames, see :mod:`dhlab.views.framing`)."""
         return self.shape.points if self.shape is not None else self.frames[:, :3, 3]
 
-    _framed_points = framed_points       # its old name (tests/test_framing.py, test_pictures.py)
-
     def _refit(self, draw):
         if self.limits is not None:
             self.limits = self._frame_limits(self.ax)

@@ -12,7 +12,6 @@ not used); the Voilà test also needs ``pip install voila`` (skipped without it)
 from __future__ import annotations
 
 import os
-import shutil
 import socket
 import subprocess
 import sys
@@ -23,51 +22,25 @@ from pathlib import Path
 import pytest
 
 from labdriver import write_lab_settings
+from support.browser_tiers import CHROMIUM_ARGS, add_tier_option, skip_unless_asked
 
 HERE = Path(__file__).parent
 collect_ignore_glob = ["*.ipynb", "results/*"]   # notebooks are opened by the tests, not run by nbval
 RESULTS = HERE / "results"             # screenshots and measurements, kept for a look (and by CI)
-CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-                 "--disable-component-update", "--disable-sync", "--no-first-run"]
 
 
 def pytest_addoption(parser):
-    parser.addoption("--browser", "--run-browser", dest="run_browser", action="store_true", default=False,
-                     help="run the real-browser tests in tests/browser (JupyterLab/Voilà + Chromium)")
-
-
-def _wanted(config) -> bool:
-    try:
-        asked = config.getoption("run_browser")
-    except ValueError:                      # option not registered (conftest loaded late)
-        asked = False
-    return bool(asked or os.environ.get("DHLAB_BROWSER_TESTS"))
+    add_tier_option(parser, "browser", "run the real-browser tests in tests/browser (JupyterLab/Voilà + Chromium)")
 
 
 def pytest_collection_modifyitems(config, items):
-    if _wanted(config):
-        return
-    skip = pytest.mark.skip(reason="browser tier: run `python -m pytest tests/browser --browser`")
-    for item in items:
-        if HERE in Path(str(item.fspath)).resolve().parents:
-            item.add_marker(skip)
+    skip_unless_asked(config, items, HERE, "browser", "DHLAB_BROWSER_TESTS",
+                      "browser tier: run `python -m pytest tests/browser --browser`")
 
 
 @pytest.fixture(scope="session")
-def chromium_path():
-    path = os.environ.get("DHLAB_CHROMIUM") or shutil.which("chromium") or "/usr/bin/chromium"
-    if not Path(path).exists():
-        pytest.fail("the browser tests need Chromium: apt-get install -y chromium (or set DHLAB_CHROMIUM)")
-    return path
-
-
-@pytest.fixture(scope="session")
-def browser(chromium_path):
-    playwright = pytest.importorskip("playwright.sync_api", reason="pip install playwright")
-    with playwright.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=chromium_path, args=CHROMIUM_ARGS, headless=True)
-        yield browser
-        browser.close()
+def chromium_args():
+    return CHROMIUM_ARGS
 
 
 def free_port() -> int:

@@ -39,7 +39,7 @@ from labdriver import close_notebook, open_lab, open_notebook, outputs_report, p
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
 sys.path.insert(0, str(ROOT / "tests"))
-import deck_rules  # noqa: E402
+from support import deck_rules  # noqa: E402
 
 LECTURES = [ROOT / "notebooks" / f"{stem}.ipynb" for stem in deck_rules.LECTURE_NOTEBOOKS]
 BACKENDS = ["widget", "inline"]

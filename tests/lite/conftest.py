@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import json
 import os
-import shutil
 import socket
 import subprocess
 import sys
@@ -25,36 +24,26 @@ from pathlib import Path
 
 import pytest
 
+from support.browser_tiers import CHROMIUM_ARGS, add_tier_option, skip_unless_asked
+
 HERE = Path(__file__).parent
 ROOT = HERE.parent.parent
 SITE = Path(os.environ.get("DHLAB_LITE_SITE", ROOT / "build" / "lite"))   # another build: DHLAB_LITE_SITE
 MEASUREMENTS = ROOT / "build" / "lite-measurements.json"
-CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-                 "--disable-component-update", "--disable-sync", "--no-first-run",
-                 # nothing but loopback resolves: a request for another host cannot leave the machine
-                 "--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE 127.0.0.1"]
 
 
 def pytest_addoption(parser):
-    parser.addoption("--lite", "--run-lite", dest="run_lite", action="store_true", default=False,
-                     help="run the browser-edition tests in tests/lite (JupyterLite + Chromium)")
-
-
-def _wanted(config) -> bool:
-    try:
-        asked = config.getoption("run_lite")
-    except ValueError:                      # option not registered (conftest loaded late)
-        asked = False
-    return bool(asked or os.environ.get("DHLAB_LITE_TESTS"))
+    add_tier_option(parser, "lite", "run the browser-edition tests in tests/lite (JupyterLite + Chromium)")
 
 
 def pytest_collection_modifyitems(config, items):
-    if _wanted(config):
-        return
-    skip = pytest.mark.skip(reason="browser-edition tier: run `make test-lite`")
-    for item in items:
-        if HERE in Path(str(item.fspath)).resolve().parents:
-            item.add_marker(skip)
+    skip_unless_asked(config, items, HERE, "lite", "DHLAB_LITE_TESTS", "browser-edition tier: run `make test-lite`")
+
+
+@pytest.fixture(scope="session")
+def chromium_args():
+    # nothing but loopback resolves: a request for another host cannot leave the machine
+    return CHROMIUM_ARGS + ["--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE 127.0.0.1"]
 
 
 _measured: dict = {}
@@ -114,23 +103,6 @@ def base_url(site):
     yield url
     process.terminate()
     process.wait(timeout=10)
-
-
-@pytest.fixture(scope="session")
-def chromium_path():
-    path = os.environ.get("DHLAB_CHROMIUM") or shutil.which("chromium") or "/usr/bin/chromium"
-    if not Path(path).exists():
-        pytest.fail("the browser edition's tests need Chromium: apt-get install -y chromium (or set DHLAB_CHROMIUM)")
-    return path
-
-
-@pytest.fixture(scope="session")
-def browser(chromium_path):
-    playwright = pytest.importorskip("playwright.sync_api", reason="pip install playwright")
-    with playwright.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=chromium_path, args=CHROMIUM_ARGS, headless=True)
-        yield browser
-        browser.close()
 
 
 class Visit:

@@ -184,7 +184,8 @@ def _not_your_frame(k: int, j: int, names, placed, W) -> str:
         point=names[p], at=point_text(placed[p]), miss=f"{miss[p]:.4f}", robot=point_text(W[p]))
     if j == 0:
         return _("drawn in a valid DH frame {k}, but not in the one your {rows}, so your assembled robot draws it "
-                 "elsewhere: {where}; use the same frames in parts 2 and 3").format(k=k, rows=_rows_text(k), where=where)
+                 "elsewhere: {where}; use the same frames in parts 2 and 3").format(
+            k=k, rows=_rows_text(k), where=where)
     return _("drawn in a valid DH frame {k}, but not in the one your transformations give it (with T{j}, charged "
              "in part 3, read as you meant it, {where}); use the same frames in parts 2 and 3").format(
         k=k, j=j, where=where)

@@ -74,8 +74,10 @@ def _structure(ref, i: int, row: Row) -> list:
     slides = ref.kinds[i - 1] == "P"
     if joint is None:
         if slides:
-            return [_("d{i} has no joint variable: joint {i} slides, so write d{i} = q{i} + (a constant length)").format(i=i)]
-        return [_("θ{i} has no joint variable: joint {i} turns, so write θ{i} = q{i} + (a constant angle)").format(i=i)]
+            return [_("d{i} has no joint variable: joint {i} slides, "
+                      "so write d{i} = q{i} + (a constant length)").format(i=i)]
+        return [_("θ{i} has no joint variable: joint {i} turns, "
+                  "so write θ{i} = q{i} + (a constant angle)").format(i=i)]
     if where == "d" and not slides:
         return [_("q{i} is in d{i}, which would make joint {i} slide (prismatic); the robot's joint {i} turns: "
                   "put q{i} in θ{i}").format(i=i)]
@@ -183,7 +185,8 @@ def analyse(answers: Answers, ref=None) -> Analysis:
             item = Item(f"T{i}", None if row is NOT_ANSWERED else False,
                         _("not answered") if row is NOT_ANSWERED else row.why)
             states = _dedupe([_State(ref.home_frames[i], s.cost + 1, s.charged + (i,), s.items + [item],
-                                     s.frames + [ref.home_frames[i]], s.own + [False], s.edits, slack=i) for s in states])
+                                     s.frames + [ref.home_frames[i]], s.own + [False], s.edits, slack=i)
+                              for s in states])
             continue
         structural_ok = structural_ok and not _structure(ref, i, row)
         A = matrix(row)

@@ -3,7 +3,7 @@
 Step 2 of the DH procedure asks how the axes z_(i-1) and z_i meet: they *intersect* (case 1),
 are *parallel* (case 2) or *skew* (case 3). Students answer in words, English or Spanish, and
 sometimes misspell them. The lesson's exercise (:func:`dhlab.course.exercises.dh_rules.check_x_cases`)
-and the grader (:mod:`dhlab.grading.answers`) both read an answer with :func:`read_case_words`, so
+and the grader (:mod:`dhlab.assignment.answers`) both read an answer with :func:`read_case_words`, so
 the two never disagree on what a word means.
 
 A word is read by its stem, so small slips and other forms pass ('paralel', 'paralelos',

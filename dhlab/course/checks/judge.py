@@ -6,7 +6,8 @@ symbols, a vector, solutions in any order); what they then say is the same, and 
 
 >>> judge("p", lambda slack: slack > 0, decimals=2)
 ✓ correct: p is right.
-  • right to the 2 decimals you typed. Keep 3 or more when a result is used again: rounding errors grow when matrices are multiplied.
+  • right to the 2 decimals you typed. Keep 3 or more when a result is used again:
+    rounding errors grow when matrices are multiplied.
 >>> judge("p", lambda slack: False, decimals=3, mistakes=[(lambda slack: True, "that is the fixed-frame order.")])
 ✗ p is not right yet.
   • that is the fixed-frame order.

@@ -15,7 +15,8 @@ is accepted (with a note when fewer than 3 were typed), and a rotation block is
 >>> T = Rz(math.radians(30)) @ trans(2, 0, 0)
 >>> check_matrix([[0.87, -0.5, 0, 1.73], [0.5, 0.87, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]], T, name="T")
 ✓ correct: T is right.
-  • right to the 2 decimals you typed. Keep 3 or more when a result is used again: rounding errors grow when matrices are multiplied.
+  • right to the 2 decimals you typed. Keep 3 or more when a result is used again:
+    rounding errors grow when matrices are multiplied.
 """
 from __future__ import annotations
 

@@ -146,7 +146,8 @@ def _entry(v, where: str) -> sp.Expr:
         raise Refused(_("{text!r} is text, not a number ({where}): write the number itself, without quotes.").format(
             text=v[:30], where=where))
     if isinstance(v, (list, tuple, dict, set, np.ndarray, sp.MatrixBase)):
-        raise Refused(_("{where} is itself a list ({v}): one number is expected there.").format(where=where, v=_short(v)))
+        raise Refused(_("{where} is itself a list ({v}): one number is expected there.").format(
+            where=where, v=_short(v)))
     if isinstance(v, (float, complex, np.floating, np.complexfloating)) and not np.isfinite(v):
         raise Refused(_(NOT_FINITE).format(where=where, v=repr(v)))
     if isinstance(v, numbers.Integral) and abs(int(v)) > BIGGEST:

@@ -7,7 +7,8 @@ turn away. Rounding is never blamed: an answer right to the decimals typed passe
 
 >>> check_value([0.87, 0.5, 0], [math.sqrt(3) / 2, 0.5, 0], name="p", components="xyz")
 ✓ correct: p is right.
-  • right to the 2 decimals you typed. Keep 3 or more when a result is used again: rounding errors grow when matrices are multiplied.
+  • right to the 2 decimals you typed. Keep 3 or more when a result is used again:
+    rounding errors grow when matrices are multiplied.
 >>> check_value([0.866, 0.5, 0, 1], [math.sqrt(3) / 2, 0.5, 0], name="p")
 ✗ p is not right yet.
   • your answer has 4 numbers; a position has 3: drop the trailing 1 of the homogeneous form.
@@ -49,7 +50,8 @@ def check_value(student, expected, *, name: str = "your value", components=None,
 
     >>> check_value(math.degrees(0.5), 0.5, name="q2", unit="rad")
     ✗ q2 is not right yet.
-      • you gave 28.6479, which is the angle in degrees: the API takes radians. Write deg2rad(28.6479) (or 28.6479·π/180).
+      • you gave 28.6479, which is the angle in degrees: the API takes radians.
+        Write deg2rad(28.6479) (or 28.6479·π/180).
     """
     name, tol, mistakes = teacher.name(name), teacher.tolerance(tol), teacher.mistakes(mistakes)
     exp_exprs = teacher.expected_vector(expected)
@@ -172,8 +174,9 @@ def check_solutions(student, expected, *, name: str = "your solutions", componen
     student, sols = read
     decimals = typed_decimals(student)
     period = np.array([2 * math.pi if u == "rad" else 360.0 if u == "°" else 0.0 for u in units])
+    typed_slack = rounding_slack(decimals)         # what rounding to the decimals typed may cost
 
-    def same(a, b, slack=rounding_slack(decimals)):
+    def same(a, b, slack=typed_slack):
         diff = a - b
         wrapped = np.where(period > 0, diff - period * np.round(diff / np.where(period > 0, period, 1)), diff)
         return bool(np.all((np.abs(wrapped) <= tol * (1 + np.abs(b))) | (np.abs(wrapped) <= slack + 1e-12)))

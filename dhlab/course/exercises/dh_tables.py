@@ -54,7 +54,7 @@ def show_axes(axes, tool=None, ax=None, length: float = 0.3, title: str = ""):
         raise DHLabError(_("ax must be a 3D matplotlib Axes (fig.add_subplot(projection='3d')), got {value}.").format(
             value=describe(ax)))
     points = [axis[0] for axis in axes]
-    for k, (p, u, kind) in enumerate(axes, start=1):
+    for k, (p, u, _kind) in enumerate(axes, start=1):
         ax.plot(*np.array([p - length * u, p + 1.6 * length * u]).T, ":", color="0.5")
         ax.quiver(*p, *(length * u), color="tab:blue", arrow_length_ratio=0.3, lw=2)
         ax.text(*(p + 1.15 * length * u), f" {k}", fontsize=12, color="tab:blue", weight="bold")

@@ -26,7 +26,8 @@ def _ex_2_1():
         (Rx(TH), N_("that is the rotation about x (it leaves x fixed): Rz leaves z fixed, so its third row "
                     "and column are those of the identity.")),
         (Ry(TH), N_("that is the rotation about y (it leaves y fixed): Rz leaves z fixed."))]),
-        [N_("A rotation about z leaves z fixed: the third row and column are 0 0 1 (and the 4th those of the identity)."),
+        [N_("A rotation about z leaves z fixed: the third row and column are 0 0 1 "
+            "(and the 4th those of the identity)."),
          N_("Its first column is where x goes: (cos θ, sin θ, 0). The second is where y goes: 90° further on.")])
 
 
@@ -136,7 +137,8 @@ def _ex_2_4():
                                     "det R = −cos 2θ, a mirror at θ = 0 and flat at 45° (erratum 001-1).")),
                   (_rz_then_translate, N_("your function builds Rz(θ)·Tr(d): the frame turns first, so the "
                                           "translation is turned too (its column is Rz(θ)·d, not d). Both agree "
-                                          "only when d lies along z. DefinirTHz moves by d, then turns: Tr(d)·Rz(θ)."))]),
+                                          "only when d lies along z. DefinirTHz moves by d, then turns: "
+                                          "Tr(d)·Rz(θ)."))]),
         [N_("Compare each line with the matrix Rz(θ) of this notebook: one entry of the rotation block differs."),
          N_("Seed 000 prints the same listing with d.x, d.y, d.z: which sign does a translation by d have?")])
 

@@ -59,7 +59,7 @@ def cases_figure(z_prev, examples):
                 _("common normal, length {length:g}").format(length=rel.distance))
         ax.text2D(0.5, 0.02, note, transform=ax.transAxes, ha="center", fontsize=12)
         ax.set(xlim=(-1, 1.5), ylim=(-1.2, 1.2), zlim=(-0.6, 2.1))
-        ax.set_title("{}: {}".format(_(name), _(rel.kind)), fontsize=14)    # a case named by N_ is translated
+        ax.set_title(f"{_(name)}: {_(rel.kind)}", fontsize=14)    # a case named by N_ is translated
         _no_ticks(ax)
         ax.set_box_aspect((2.5, 2.4, 2.7), zoom=1.05)
         ax.view_init(elev=18, azim=-62)
@@ -137,7 +137,7 @@ def dh_parameters_figure(theta_deg: float = 50.0, d: float = 1.2, a: float = 1.2
 
 
 # --- exercise 5.1: the joint axes, and after the answer their common normals --------------------------
-_EXERCISE_CAMERA = dict(elev=22, azim=-74)      # z_1 passes beside z_0, not across it (tests/test_course_figures.py)
+_EXERCISE_CAMERA = dict(elev=22, azim=-74)      # z_1 passes beside z_0, not across it (tests/course/test_course_figures.py)
 
 
 def _name_at(p, u, length):
@@ -148,7 +148,7 @@ def _name_at(p, u, length):
 
 def _draw_axes(ax, axes, length, tool):
     """Joint axes as dotted lines with an arrow (positive sense) and the label z_(k−1) at the tip."""
-    for k, (p, u, kind) in enumerate(axes):
+    for k, (p, u, _kind) in enumerate(axes):
         p, u = np.asarray(p, float), np.asarray(u, float) / np.linalg.norm(u)
         _segment(ax, p - 1.2 * length * u, p + 2.0 * length * u, ls=":", color="0.45", lw=1.6)
         ax.quiver(*p, *(length * u), color=AXIS_COLORS[2], arrow_length_ratio=0.3, lw=2.5)
@@ -226,7 +226,7 @@ def common_normals_after(answer, axes, tool=None):
 
 def _along_y(ax, axes, lines, length, tool):
     """The axes seen along +y (x to the right, z up): an axis along y is a point (⊗: pointing away)."""
-    for k, (line, (p, u, _kind)) in enumerate(zip(lines, axes)):
+    for k, line in enumerate(lines):                  # the line of the axis z_k
         p2, u2 = line.point[[0, 2]], line.direction[[0, 2]]
         if np.linalg.norm(u2) < 1e-9:
             ax.plot(*p2, ls="", marker="o", ms=16, mfc="white", mec=AXIS_COLORS[2], mew=2)
@@ -240,7 +240,7 @@ def _along_y(ax, axes, lines, length, tool):
             lift = (0.0, 0.0) if abs(u2[1]) > 0.9 else (0.0, 0.06)
             label(ax, p2 + 1.5 * length * u2 + lift, f"$z_{k}$", color=AXIS_COLORS[2], fontsize=15,
                   ha="right" if abs(u2[1]) > 0.9 else "center")
-    for k, (a, b) in enumerate(zip(lines, lines[1:])):
+    for a, b in zip(lines, lines[1:]):
         rel = relation(a, b)
         if rel.kind != "intersect":
             start, end = a.nearest_point(rel.foot)[[0, 2]], rel.foot[[0, 2]]

@@ -99,7 +99,7 @@ def paso2_figure(robot=None, length: float = 3.5):
     robot = robots.ssrms() if robot is None else robot
     fig = new_figure((9.6, 7.0), layout=None)
     ax = _arm_axes(fig, robot, _("Paso 2: the case of each $x_i$"))
-    for i, line in enumerate(z_axes(robot)):
+    for line in z_axes(robot):
         ax.plot(*np.array([line.point - 4 * line.direction, line.point + 4 * line.direction]).T,
                 color=AXIS_COLORS[2], lw=1.2, alpha=0.6)
     for step in x_steps(robot):
@@ -130,7 +130,7 @@ def paso3_figure(robot=None, length: float = 3.0):
     names = {}
     for i, F in enumerate(frames):
         names.setdefault(tuple(F[:3, 3].round(9)), []).append(i)
-    for i, F in enumerate(frames):
+    for F in frames:
         triad(ax, F, length, letters=False, lw=2.0)
         ax.plot(*np.array([F[:3, 3], F[:3, 3] + length * F[:3, 1]]).T, color=AXIS_COLORS[1], lw=4.5)
     for point, ids in names.items():                     # beside the origin, away from every axis drawn there
@@ -138,7 +138,8 @@ def paso3_figure(robot=None, length: float = 3.0):
         away = free_direction(ax, frames[ids[0]], avoid=others)
         label(ax, np.array(point) + 0.75 * length * away, "$B_{" + ",".join(map(str, ids)) + "}$")
     handles = [Line2D([], [], color=c, lw=w, label=t) for c, w, t in
-               ((AXIS_COLORS[0], 2, "$x_i$"), (AXIS_COLORS[1], 4.5, "$y_i = z_i \\times x_i$"), (AXIS_COLORS[2], 2, "$z_i$"))]
+               ((AXIS_COLORS[0], 2, "$x_i$"), (AXIS_COLORS[1], 4.5, "$y_i = z_i \\times x_i$"),
+                (AXIS_COLORS[2], 2, "$z_i$"))]
     _on_top(ax)
     fig.legend(handles=handles, loc="lower center", ncols=3, fontsize=12, frameon=False)
     return fig

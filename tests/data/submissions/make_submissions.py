@@ -5,7 +5,7 @@
 Each one is the generated student notebook with answers typed into its answer cells (the
 source notebook's solutions, a valid alternative DH assignment, or specific mistakes) and,
 for the hostile ones, extra cells that raise, hang, flood, exhaust memory, kill processes
-or tamper with dhlab. Two are not notebooks at all. tests/test_grading_runner.py grades
+or tamper with dhlab. Two are not notebooks at all. tests/grading/test_grading_runner.py grades
 them all and says what each must get.
 """
 import copy
@@ -133,7 +133,7 @@ def endless():
 chain = endless()'''
 make("hostile_weird_values.ipynb", {"part1_answers": WEIRD, "part2_answers": WEIRD2, "part3_answers": WEIRD3})
 
-# --- one slip, one item (issue 10): a mistake that leaves a valid frame costs only its row -------------
+# --- one slip, one item: a mistake that leaves a valid frame costs only its row -------------
 make("slip_alpha1.ipynb", {**ALL, "part3_answers": P3.replace("T1 = Tz(q1, 0) @ Tx(90, 0)", "T1 = Tz(q1, 0) @ Tx(-90, 0)")})
 make("slip_alpha3.ipynb", {**ALL, "part3_answers": P3.replace("Tx(-90, 0.0203)", "Tx(90, 0.0203)")})
 # the alternative assignment (x4 backwards), with the +180° of θ4 forgotten

@@ -1,0 +1,18 @@
+"""Releasing the assignment: ``dhlab-assign release``, one notebook per student, each with its own robot.
+
+* :mod:`~dhlab.grading.release.notebooks` — the release: a variant drawn and signed for every student
+  (its :func:`~dhlab.grading.release.notebooks.main` is ``dhlab-assign``; ``python -m dhlab.grading.release``);
+* :mod:`~dhlab.grading.release.roster` — the roster's student ids, and a safe file name for each;
+* :mod:`~dhlab.grading.release.language` — each released notebook in its student's language;
+* :mod:`~dhlab.grading.release.generate` — the student notebook (package data, ``dhlab/grading/template/``)
+  made from the teacher's source notebook (``python -m dhlab.grading.release.generate``).
+"""
+from __future__ import annotations
+
+__all__ = ["main"]
+
+
+def main(argv=None) -> int:
+    """``dhlab-assign`` (:func:`dhlab.grading.release.notebooks.main`; imported only when it runs)."""
+    from .notebooks import main as release_main
+    return release_main(argv)
