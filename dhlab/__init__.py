@@ -50,7 +50,7 @@ __all__ = [
     "DHRobot", "RevoluteDH", "PrismaticDH", "Robot", "Link", "Rot", "Move", "DHTable",
     "Rx", "Ry", "Rz", "Tr", "trans", "Tx", "Tz", "dh_matrix", "inv", "is_rigid", "check_rigid", "rpy",
     "deg2rad", "rad2deg", "compact", "legend", "DHLabError", "robots", "ik", "symbolic", "transforms",
-    "dh_from_axes", "dh_assignment", "joint_axes", "DHAssignment", "assign", "lines",
+    "dh_from_axes", "dh_assignment", "joint_axes", "DHAssignment", "dh_frames", "lines",
     "MDHRobot", "RevoluteMDH", "PrismaticMDH", "to_modified", "to_standard", "mdh",
     "set_language", "get_language",
     "teach", "robot_view", "stepthrough", "stepthrough_link", "spaces", "view", "show_matrix", "projector",

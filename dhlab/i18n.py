@@ -5,7 +5,7 @@ says ``dhlab.set_language("es")`` in its first cell, and the grader and the
 release read the ``DHLAB_LANGUAGE`` environment variable (or their
 ``--language`` option). Messages are looked up in gettext catalogs
 (``dhlab/locale/<lang>/LC_MESSAGES/<domain>.mo``, compiled from the ``.po`` files
-beside them, and kept up to date by ``python -m dhlab.i18n_catalog``); a message
+beside them, and kept up to date by ``python -m tools.i18n_catalog``); a message
 without a translation is shown in English.
 
 >>> previous = set_language("es")
@@ -51,7 +51,7 @@ _catalogs: dict[str, gettext.NullTranslations] = {}
 
 def translations(language: str) -> gettext.NullTranslations:
     """The gettext catalog of ``language``: the lessons' domain first, then the grader's
-    (see ``dhlab.i18n_catalog.DOMAINS``), loaded once."""
+    (see ``tools.i18n_catalog.DOMAINS``), loaded once."""
     if language not in _catalogs:
         catalog = gettext.translation("dhlab", LOCALE_DIR, languages=[language], fallback=True)
         catalog.add_fallback(gettext.translation("dhlab_grading", LOCALE_DIR, languages=[language], fallback=True))

@@ -36,8 +36,10 @@ MOVED = {
     "dhlab.course.family_notebook": "dhlab.assignment.notebook_cells",
     "dhlab.grade": "dhlab.grading.cli",
     "dhlab.assign": "dhlab.dh_frames",
+    # the grader's languages joined the course's one ``_``
     "dhlab.grading.language": "dhlab.i18n",
-    "dhlab.grading.generate": "dhlab.grading.release.generate",   # python -m dhlab.grading.generate --check      # the grader's languages joined the course's one ``_``
+    # ``python -m dhlab.grading.generate --check``: the release's tools are in grading/release/
+    "dhlab.grading.generate": "dhlab.grading.release.generate",
 }
 
 

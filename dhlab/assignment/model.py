@@ -42,7 +42,7 @@ from ..i18n import _
 from ..lines import Line
 from ..lines import relation as line_relation
 from .family import spec as family_spec
-from .reference import dh_matrix, dh_program
+from .reference import row_matrix, dh_program
 
 __all__ = ["AssignmentRobot", "build", "physical_frames", "rows_from_frames",
            "random_valid_frames", "GRIPPER"]
@@ -271,7 +271,7 @@ def rows_from_frames(robot, frames) -> list:
         alpha = math.atan2(A[2, 1], A[2, 2])
         d = float(A[2, 3])
         a = float(A[0, 3] * math.cos(theta) + A[1, 3] * math.sin(theta))
-        if not np.allclose(dh_matrix(theta, d, a, alpha), A, atol=1e-9):
+        if not np.allclose(row_matrix(theta, d, a, alpha), A, atol=1e-9):
             raise DHLabError(_("frames {j} and {k} are not related by Tz[θ, d]·Tx[α, a]: not DH frames.").format(
                 j=k - 1, k=k))
         sign = 1 if frames[k - 1][:3, 2] @ robot.axes[k - 1].direction > 0 else -1

@@ -40,7 +40,7 @@ from ..lines import relation as line_relation
 from ..robots import puma560
 
 __all__ = ["Line", "relation", "Reference", "reference", "LINK_NAMES",
-           "dh_program", "dh_frames", "dh_matrix", "cache_of", "TOL_POS", "TOL_DEG"]
+           "dh_program", "dh_frames", "row_matrix", "cache_of", "TOL_POS", "TOL_DEG"]
 
 TOL_POS = 2e-3        # metres: a student who types 0.15 for 0.15005 is right
 TOL_DEG = 0.5         # degrees, for directions
@@ -105,9 +105,11 @@ def dh_frames(rows, kinds: str | None, Q) -> np.ndarray:
     return kinematics.run(dh_program(rows, kinds), Q[:, columns], frames=True)
 
 
-def dh_matrix(theta: float, d: float, a: float, alpha: float) -> np.ndarray:
+def row_matrix(theta: float, d: float, a: float, alpha: float) -> np.ndarray:
     """One row of a DH table as a matrix, ``Tz[θ, d]·Tx[α, a]`` (radians, metres), from the
-    elementary motions of :mod:`dhlab.kinematics` (numbers only: the checks call it often)."""
+    elementary motions of :mod:`dhlab.kinematics`: numbers only, without the argument checks of
+    :func:`dhlab.transforms.dh_matrix` (which also takes symbols), because the checks call it
+    thousands of times on values they made themselves."""
     step = kinematics.elementary
     return step("R", 2, theta) @ step("T", 2, d) @ step("T", 0, a) @ step("R", 0, alpha)
 

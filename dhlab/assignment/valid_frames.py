@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import model
-from .reference import TOL_DEG, TOL_POS, Reference, cache_of, dh_matrix, reference, relation
+from .reference import TOL_DEG, TOL_POS, Reference, cache_of, row_matrix, reference, relation
 
 __all__ = ["FrameFamily", "frame_family", "nearest_valid_frame", "valid_frames_near", "is_valid_frame",
            "fit_link", "rotation_angle", "random_valid_frames", "dh_rows_from_frames"]
@@ -305,7 +305,7 @@ def dh_rows_from_frames(frames, ref: Reference | None = None) -> list:
         alpha = math.atan2(A[2, 1], A[2, 2])
         d = A[2, 3]
         a = A[0, 3] * math.cos(theta) + A[1, 3] * math.sin(theta)
-        if not np.allclose(dh_matrix(theta, d, a, alpha), A, atol=1e-9):
+        if not np.allclose(row_matrix(theta, d, a, alpha), A, atol=1e-9):
             raise ValueError(f"frames {k - 1} and {k} are not related by Tz·Tx (not DH frames)")
         sign = 1 if frames[k - 1][:3, 2] @ ref.axes[k - 1].direction > 0 else -1
         rows.append((sign, math.degrees(theta), float(d), float(a), math.degrees(alpha)))

@@ -89,7 +89,7 @@ class TeachPanel(Panel):
     """The widget returned by :func:`teach`.
 
     Attributes: ``sliders`` (one per joint, display units), ``figure`` (the
-    matplotlib Figure), ``view`` (the :class:`~dhlab.view.RobotView`),
+    matplotlib Figure), ``view`` (the :class:`~dhlab.views.view.RobotView`),
     ``readout`` and ``matrix`` (HTML widgets), ``q`` (radians / length units).
     """
 

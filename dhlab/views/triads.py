@@ -5,8 +5,8 @@ course by default. Red and green are the pair that about 8 % of male students
 cannot tell apart, so every triad can also carry the letters x, y, z at the tips
 of its axes, and a colour-blind-safe palette is one call away::
 
-    dhlab.views.set_palette("colorblind")     # Paul Tol's "bright" red, green, blue
-    dhlab.views.set_palette("seed")           # back to the seeds' colours
+    dhlab.views.triads.set_palette("colorblind")     # Paul Tol's "bright" red, green, blue
+    dhlab.views.triads.set_palette("seed")           # back to the seeds' colours
 
 >>> import numpy as np
 >>> x, y, z = triad_segments(np.eye(4)[None], 2.0)

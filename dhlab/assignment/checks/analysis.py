@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..answers import NOT_ANSWERED, Answers, Row
-from ..reference import dh_matrix
+from ..reference import row_matrix
 from ..valid_frames import is_valid_frame
 
 __all__ = ["Item", "Analysis", "rows_of", "matrix", "along_arrow", "fits", "slips_of", "point_text"]
@@ -73,7 +73,7 @@ def matrix(row: Row, q: float = 0.0) -> np.ndarray:
     """T_i at joint value q (radians or metres; q only enters where the row's variable is)."""
     theta = math.radians(row.theta.const) + (row.theta.sign * q if row.theta.joint is not None else 0.0)
     d = row.d.const + (row.d.sign * q if row.d.joint is not None else 0.0)
-    return dh_matrix(theta, d, row.a, math.radians(row.alpha))
+    return row_matrix(theta, d, row.a, math.radians(row.alpha))
 
 
 def along_arrow(ref, i: int, V) -> bool:

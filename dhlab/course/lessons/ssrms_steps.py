@@ -6,7 +6,7 @@
   their common normal, and the origin B_i where that normal meets A_(i+1) (:func:`x_steps`);
 * **Paso 3**: y_i = z_i × x_i, which completes each frame B_i (:func:`frames_b`).
 
-The frames are placed by the course's frame-assignment helper (:func:`dhlab.assign.dh_assignment`, notebook 5)
+The frames are placed by the course's frame-assignment helper (:func:`dhlab.dh_frames.dh_assignment`, notebook 5)
 with seed 000's sign for case 1, x_i = z_i × z_(i−1); this module only reads off what each step needs.
 
 >>> [s.case for s in x_steps()]                 # x1 … x6 of the SSRMS: the seed's figure 8
@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ... import robots
-from ...assign import dh_assignment, joint_axes
+from ...dh_frames import dh_assignment, joint_axes
 from ...i18n import N_, _
 from ...lines import Line
 from ..exercises.dh_common import as_robot
@@ -73,7 +73,7 @@ def _point(v) -> str:
 
 def assignment(robot=None):
     """The frames placed by the rules on ``robot``'s joint axes at θ = 0 (default: the SSRMS), with seed
-    000's sign for case 1: the report of :func:`dhlab.assign.dh_assignment`."""
+    000's sign for case 1: the report of :func:`dhlab.dh_frames.dh_assignment`."""
     robot = robots.ssrms() if robot is None else as_robot(robot)
     return dh_assignment(*joint_axes(robot), case1="z x z_prev")
 
