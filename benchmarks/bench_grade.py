@@ -2,7 +2,7 @@
 
     python benchmarks/bench_grade.py [--count 30] [--jobs 2] [--serial N] [--variants 30] [--json out.json]
 
-The goal (issue 32): 200 submissions in at most 10 minutes with ``-j 2`` on an idle 2-core
+The goal: 200 submissions in at most 10 minutes with ``-j 2`` on an idle 2-core
 machine, about 3 s of wall time per submission. Each run reports its wall seconds per
 submission, and splits them into the grader's fixed start-up (reading the assignment, the
 self-check's kernel: paid once a run) and the seconds each submission adds (from the

@@ -6,7 +6,7 @@ for the SSRMS (7 joints) and the PUMA 560 (6 joints).
     python benchmarks/bench_views.py --steps 80 --save /tmp/bench   # more steps, keep the last frames
     python benchmarks/bench_views.py --moves drag   # slider drags (small steps) instead of jumps
 
-The figure is the lecture-grade one (issue 9): frame labels placed apart and
+The figure is the lecture-grade one: frame labels placed apart and
 merged where frames share an origin, the joint axes as dashed lines, the
 limits framed around the robot (re-framed when it needs it), title and axis
 labels, at the teach panel's size. The naive pattern draws all of that again

@@ -9,7 +9,7 @@
 // target is inside an element with `data-lm-suppress-shortcuts`.
 //
 // That attribute left on a slider suppresses *every* shortcut, Space ("next slide") included:
-// a lecturer who had dragged a slider could not go on with Space (issue 23). So the slider
+// a lecturer who had dragged a slider could not go on with Space. So the slider
 // carries it only while one of its own keys is being dispatched: a keydown listener on
 // `window` in the capture phase runs before any listener on `document` (the capture phase
 // goes window -> document -> ... -> target), so it marks the slider before lumino looks, and

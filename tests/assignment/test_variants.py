@@ -41,7 +41,8 @@ def test_the_draw_is_pinned():
     """A variant must be the same on every machine and next year (grading re-draws from the
     roster): the draw is SHA-256 based, and this pins one of them."""
     assert V.variant("puma560", 0).to_dict() == {
-        "v": 1, "family": "puma560", "table": V.table_digest("puma560"), "lengths": {"a2": 0.495, "a3": 0.02, "d3": 0.14, "d4": 0.415, "floor": 0.76},
+        "v": 1, "family": "puma560", "table": V.table_digest("puma560"),
+        "lengths": {"a2": 0.495, "a3": 0.02, "d3": 0.14, "d4": 0.415, "floor": 0.76},
         "home": [0, 0, -90, 90, 0, 0], "senses": [1, 1, 1, 1, -1, 1],
         "base": {"mount": "floor", "plate": -0.76, "yaw": 180}}
 
@@ -130,7 +131,8 @@ def test_roster_variants_are_all_different_and_depend_on_the_secret():
     ({"base": {"mount": "wall", "plate": 0, "yaw": 0}}, "variant base"),
     ({"v": 2}, "format 2"),
     ({"table": "0123456789ab"}, "another version of the KUKA KR5's table"),
-    ({"family": "cobra600", "table": V.table_digest("cobra600"), "lengths": {"a1": 0.3, "a2": 0.3, "d1": 0.4, "stroke": 1.0}, "home": [0, 0, 0.1, 0],
+    ({"family": "cobra600", "table": V.table_digest("cobra600"),
+      "lengths": {"a1": 0.3, "a2": 0.3, "d1": 0.4, "stroke": 1.0}, "home": [0, 0, 0.1, 0],
       "senses": [1, 1, 1, 1], "base": {"mount": "ceiling", "plate": 2, "yaw": 0}}, "floor only"),
 ])
 def test_from_dict_rejects_bad_variants(bad, match):
@@ -322,7 +324,8 @@ def _other_mistakes(robot, ns):
     yield "part1", "n_links", dict(ns, n_links=robot.n)
     yield "part1", "n_joints", dict(ns, n_joints=robot.n + 1)
     k = robot.kinds.find("P") if "P" in robot.kinds else 1
-    yield "part1", "joint_types", dict(ns, joint_types=robot.kinds[:k] + "PR"[robot.kinds[k] == "P"] + robot.kinds[k + 1:])
+    swapped = "PR"[robot.kinds[k] == "P"]          # joint k's kind turned into the other one
+    yield "part1", "joint_types", dict(ns, joint_types=robot.kinds[:k] + swapped + robot.kinds[k + 1:])
     for i in range(1, robot.n):
         cases = list(ns["x_cases"])
         if "P" in robot.kinds[i - 1:i + 1] and cases[i - 1] in ("intersect", "skew"):

@@ -227,7 +227,8 @@ def assignment_entries():
 GROUPS = {"maths": maths_entries, "catalogue": catalogue_entries, "checks": check_entries,
           "assignment": assignment_entries}
 
-# Failures of this sweep whose fix belongs to another module, each with the file and the fix. (entry, slot, labels — None for every label —, where, the fix)
+# Failures of this sweep whose fix belongs to another module, each with the file and the fix:
+# (entry, slot, labels — None for every label —, where, the fix)
 KNOWN_RULES = [
     ("q1 - c", "c", ("masked", "sp.true"), "dhlab/assignment/notebook.py",
      "JointTerm: `__array_ufunc__ = None`, so numpy defers to JointTerm.__rsub__ (sympy's BooleanAtom "

@@ -178,7 +178,8 @@ def test_valid_joint_vectors_still_work():
     assert np.allclose(ch.matrix([dhlab.deg2rad(30), 0.1]), ch.frames(np.array([math.pi / 6, 0.1]))[-1])
     sliding = (A.Tz(q1, 0) @ A.Tx(0, 1)) @ (A.Tz(0, q2) @ A.Tx(0, 0))
     assert sliding.frames([0.0, 3.0])[-1][2, 3] == 3.0
-    _raises(lambda: sliding.frames([0.0, dhlab.deg2rad(30)]), r"q\[1\] = deg2rad\(30\) is an angle, but joint 2 is prismatic")
+    _raises(lambda: sliding.frames([0.0, dhlab.deg2rad(30)]),
+            r"q\[1\] = deg2rad\(30\) is an angle, but joint 2 is prismatic")
 
 
 def test_public_constructors_refuse_other_objects():

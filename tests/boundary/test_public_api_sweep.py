@@ -83,7 +83,8 @@ ANGLE_JUNK = [("90 (degrees?)", 90, True), ("-180 (degrees?)", -180.0, True), ("
               ("sp.Integer(500)", sp.Integer(500), True), ("sp.Float(90)", sp.Float(90), True),
               ("1e308", 1e308, True), ("-1e308", -1e308, True), ("deg2rad(30)", deg2rad(30), False),
               ("-deg2rad(45)", -deg2rad(45), False), ("deg2rad(400)", deg2rad(400), True)]
-LENGTH_JUNK = [("deg2rad(30)", deg2rad(30), True), ("-deg2rad(30)", -deg2rad(30), True), ("2*deg2rad(10)", 2 * deg2rad(10), True),
+LENGTH_JUNK = [("deg2rad(30)", deg2rad(30), True), ("-deg2rad(30)", -deg2rad(30), True),
+               ("2*deg2rad(10)", 2 * deg2rad(10), True),
                ("1e308", 1e308, False), ("-1e308", -1e308, False), ("1e300", 1e300, False), ("1000", 1000, False)]
 TEXT_JUNK = [("None", None, True), ("5", 5, True), ("b'x'", b"x", True), ("['a']", ["a"], True),
              ("nan", float("nan"), True)]
@@ -225,9 +226,11 @@ def qlim_junk(revolute: bool):
            ("(0, 1) ints", (0, 1), False), ("(-0.5, sp.Rational(1, 2))", (-0.5, sp.Rational(1, 2)), False)]
     if revolute:
         out += [("(-100, 100) rad", (-100, 100), True), ("(-180, 180) degrees?", (-180, 180), True),
-                ("(deg2rad(-90), deg2rad(90))", (deg2rad(-90), deg2rad(90)), False), ("deg2rad([-90, 90])", deg2rad([-90, 90]), False)]
+                ("(deg2rad(-90), deg2rad(90))", (deg2rad(-90), deg2rad(90)), False),
+                ("deg2rad([-90, 90])", deg2rad([-90, 90]), False)]
     else:
-        out += [("(deg2rad(-90), deg2rad(90))", (deg2rad(-90), deg2rad(90)), True), ("deg2rad([0, 30])", deg2rad([0, 30]), True),
+        out += [("(deg2rad(-90), deg2rad(90))", (deg2rad(-90), deg2rad(90)), True),
+                ("deg2rad([0, 30])", deg2rad([0, 30]), True),
                 ("(0, 1e308)", (0, 1e308), False), ("(0, 1e200)", (0, 1e200), False)]
     return out
 
@@ -388,7 +391,7 @@ def transform_calls():
                             refuse and label not in ("[]", "[[]]", "np.array([1., 2.])", "sp.Matrix([1, 2])", "1e308",
                                                      "-1e308", "1e300", "1000", "Integral"),
                             (lambda r, f=fn, v=value: _unit_check(f, v, r))))
-    for fn, extra in ((dhlab.inv, {}), (dhlab.rpy, {}), (dhlab.check_rigid, {}), (dhlab.is_rigid, {})):
+    for fn in (dhlab.inv, dhlab.rpy, dhlab.check_rigid, dhlab.is_rigid):
         for label, value, refuse in matrix_junk(symbolic_ok=fn is dhlab.inv):
             if fn is dhlab.is_rigid and not label.startswith(NOT_A_4X4):
                 refuse = False            # a non-rigid matrix is a fine question for is_rigid: the answer is False
@@ -463,7 +466,8 @@ def link_calls():
                           ("no joint", [Rot("z", 0.1)], True), ("a Factor", Rot("z", joint=True), True),
                           ("dict", {"a": Rot("z", joint=True)}, True)], ("Link", "factors", "motions", "link")),
              "qlim": (qlim_junk(True), ("qlim",)), "name": (TEXT_JUNK, ("name",))}
-    out += _calls_for("Link", slots, lambda factors=(Rot("z", joint=True),), qlim=None, name="":
+    one_joint = (Rot("z", joint=True),)
+    out += _calls_for("Link", slots, lambda factors=one_joint, qlim=None, name="":
                       Robot([Link(list(factors) if isinstance(factors, tuple) else factors, name=name, qlim=qlim)]),
                       robot_problem)
     return out
@@ -550,7 +554,8 @@ def robot_calls():
     table_qlim = [(lbl, [v], r) for lbl, v, r in qlim_junk(True) if "deg" not in lbl and "rad" not in lbl
                   and "degrees" not in lbl]
     table_qlim += [("(-180, 180) degrees", [(-180, 180)], False), ("(-720, 720) degrees", [(-720, 720)], True),
-                   ("(deg2rad(-90), deg2rad(90)) in a degree table", [(deg2rad(-90), deg2rad(90))], True), ("[]", [], True),
+                   ("(deg2rad(-90), deg2rad(90)) in a degree table", [(deg2rad(-90), deg2rad(90))], True),
+                   ("[]", [], True),
                    ("None per row", [None], False), ("two for one row", [(0, 1), (0, 1)], True)]
     slots = {"rows": (rows_junk, ("row", "table", "q1", "θ", "joint variable", "link 1")),
              "angles": (CHOICE_JUNK + [("'degrees'", "degrees", True), ("'RAD'", "RAD", True)], ("angles",)),
@@ -561,8 +566,9 @@ def robot_calls():
         [("q1", 0, 1, 90)], angles="rad"), ("α", "row", "alpha"), True, robot_problem))
 
     # Robot: a product of motions per link
-    def make_robot(links=(Link([Rot("z", joint=True), Move("x", sp.Symbol("l1"))]),), params=None, joint_symbols=None,
-                   name="r"):
+    one_link = (Link([Rot("z", joint=True), Move("x", sp.Symbol("l1"))]),)
+
+    def make_robot(links=one_link, params=None, joint_symbols=None, name="r"):
         return Robot(list(links) if isinstance(links, tuple) else links,
                      params={"l1": 0.5} if params is None else params, joint_symbols=joint_symbols, name=name)
     robot_links = [(lbl, v, r) for lbl, v, r in links_junk if lbl != "a Link in a DHRobot"] + [
@@ -743,7 +749,8 @@ def ik_and_lines_calls():
                         ("tol",), refuse and label != "0", (lambda r: _ik_check(pr, {"x": 1.2, "y": 0.2}, r))))
     for label, value, refuse in [("nan", float("nan"), True), ("'1'", "1", True), ("None", None, True),
                                  ("1e308", 1e308, True),
-                                 ("deg2rad(30)", deg2rad(30), True), ("1j", 1j, True), ("x", X, True), ("0.2", 0.2, False)]:
+                                 ("deg2rad(30)", deg2rad(30), True), ("1j", 1j, True), ("x", X, True),
+                                 ("0.2", 0.2, False)]:
         out.append(Call("ik.pr_mechanism_ik_explained", "y", label,
                         (lambda v=value: dhlab.ik.pr_mechanism_ik_explained(pr, 1.2, v)), ("y",), refuse,
                         lambda r: None if isinstance(r, str) and "nan" not in r else "no text, or nan in it"))
@@ -758,7 +765,8 @@ def ik_and_lines_calls():
                         ("pr_mechanism", "P-R", "l1", "l2", "robot"), refuse, None))
     vec_junk = [(lbl, v, True) for lbl, v, _ in _scalar_junk() if lbl != "[0.5]"] + [
         ("(1, 2)", (1, 2), True), ("(1, 2, 3, 4)", (1, 2, 3, 4), True), ("nan inside", (0, float("nan"), 1), True),
-        ("[[1, 2, 3]]", [[1, 2, 3]], True), ("text", ("1", "2", "3"), True), ("deg2rad() vector", deg2rad([0, 0, 90]), False),
+        ("[[1, 2, 3]]", [[1, 2, 3]], True), ("text", ("1", "2", "3"), True),
+        ("deg2rad() vector", deg2rad([0, 0, 90]), False),
         ("sympy vector", sp.Matrix([0, 0, 1]), False), ("1e308 inside", (1e308, 0, 1), False)]
     for slot in ("point", "direction"):
         for label, value, refuse in vec_junk:
@@ -840,7 +848,8 @@ def view_calls():
             out.append(Call(name, "figsize", label, (lambda f=fn, v=value: f(puma, figsize=v)), ("figsize",),
                             refuse, None))
     for label, value, refuse in [("None", None, False), ("'abc'", "abc", True), ("[0.5]", [0.5], True),
-                                 ("deg2rad() on the slider", [deg2rad(10), deg2rad(30)], True), ("nan", [float("nan"), 0.1], True)]:
+                                 ("deg2rad() on the slider", [deg2rad(10), deg2rad(30)], True),
+                                 ("nan", [float("nan"), 0.1], True)]:
         out.append(Call("spaces", "q", label, (lambda v=value: dhlab.spaces(pr, v)), ("q",), refuse, None))
     for label, value, refuse in INDEX_JUNK:
         out.append(Call("stepthrough_link", "i", label, (lambda v=value: dhlab.stepthrough_link(puma, v)),
@@ -942,7 +951,8 @@ def test_hostile_values_get_a_result_or_a_clear_error(group):
     assert not bad, f"{len(bad)} call(s) of the sweep failed:\n" + "\n".join(bad)
 
 
-if __name__ == "__main__":              # python tests/boundary/test_public_api_sweep.py [group ...]: every failure, and totals
+# python tests/boundary/test_public_api_sweep.py [group ...]: every failure, and totals
+if __name__ == "__main__":
     import sys
     from collections import Counter
     chosen = sys.argv[1:] or sorted(GROUPS)

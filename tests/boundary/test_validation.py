@@ -171,9 +171,11 @@ KNOWN_BAD_INPUTS = {
     "datetime array": lambda: robots.puma560().fk(np.zeros(6, dtype="datetime64[s]")),
     "masked values": lambda: robots.puma560().fk(np.ma.array(np.zeros(6), mask=[0, 0, 1, 0, 0, 0])),
     "text in trans": lambda: trans(sp.Symbol("x"), "y", 0),
-    "deg2rad() inside a numpy array, prismatic": lambda: robots.seed002_4dof().fk(np.array([deg2rad(10), deg2rad(30), 0.2, 0])),
+    "deg2rad() inside a numpy array, prismatic":
+        lambda: robots.seed002_4dof().fk(np.array([deg2rad(10), deg2rad(30), 0.2, 0])),
     "negated deg2rad(), prismatic": lambda: robots.seed002_4dof().fk([deg2rad(10), -deg2rad(30), 0.2, 0]),
-    "deg2rad() in a nested batch, prismatic": lambda: robots.seed002_4dof().fk([[0, 0.1, 0.2, 0], [0, deg2rad(3), 0, 0]]),
+    "deg2rad() in a nested batch, prismatic":
+        lambda: robots.seed002_4dof().fk([[0, 0.1, 0.2, 0], [0, deg2rad(3), 0, 0]]),
     "fk_sym timeout of -1": lambda: robots.puma560().fk_sym(timeout=-1),
 }
 

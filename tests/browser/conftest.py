@@ -7,7 +7,8 @@ Not part of the main test run: these tests are skipped unless asked for,
 
 They need ``apt-get install chromium`` (``/usr/bin/chromium``, or set
 ``DHLAB_CHROMIUM``) and ``pip install playwright`` (its own browser download is
-not used); the Voilà test also needs ``pip install voila`` (skipped without it). Each test starts its own server on 127.0.0.1 with a random token.
+not used); the Voilà test also needs ``pip install voila`` (skipped without it). Each test
+starts its own server on 127.0.0.1 with a random token.
 """
 from __future__ import annotations
 

@@ -8,7 +8,7 @@ browser edition): both have JupyterLab's application object as ``window.jupytera
   first cell (the deck starts at the selected cell);
 * :func:`screen`: what the deck shows now, measured in the page: which cells are on screen,
   whether they fit the window (no scrolling), the body text's size, the words of prose, error
-  outputs, and whether a notes/skip cell shows;
+  outputs, and whether a notes or skip cell shows;
 * :func:`walk`: Space, Space, ... to the end, calling back on every step.
 """
 from __future__ import annotations
@@ -112,7 +112,8 @@ _SCREEN_JS = r"""
       cell.node.querySelectorAll('.jp-OutputArea-output').forEach(o => {
         if (o.querySelector('.widget-slider') && o.querySelector(figureSelector)) panels += 1;
         const text = (o.innerText || '').trim();
-        if (/Error while updating|Error displaying widget/.test(text)) errors.push(`cell ${index}: ${text.slice(0, 160)}`);
+        if (/Error while updating|Error displaying widget/.test(text))
+          errors.push(`cell ${index}: ${text.slice(0, 160)}`);
       });
     }
   }
@@ -225,7 +226,8 @@ def move_slider_in_deck(page, output) -> float:
 def drag_slider_in_deck(page, output) -> float:
     """The panel's first slider dragged with the mouse, inside the deck, as a lecturer does; the
     fraction of the figure's pixels changed. The focus stays on the slider's handle: the walk's next
-    Space must still go on (issue 23: it did not while the panel marked its sliders for good)."""
+    Space must still go on (it did not while the panel kept its sliders marked for good:
+    see dhlab/views/keys.js)."""
     from labdriver import changed_fraction
 
     figure = output.locator(FIGURE_SELECTOR).first
@@ -250,8 +252,9 @@ def check_deck(page, name: str, results_dir: Path, on_panel=None, slider_by: str
     """Start the deck of the notebook in front (run already), press Space to its end and check
     every step (see tests/browser/test_decks_browser.py); on the first panel, ``on_panel(output)``
     then a slider moved with the keys (``slider_by="mouse"``: dragged, see
-    :func:`drag_slider_in_deck`), the deck staying on its screen. Screenshots ``deck-<name>-{first,panel,last}.jpg`` (and
-    ``-overflow-cell<N>``) in ``results_dir``. Returns the measurements and ``failures``."""
+    :func:`drag_slider_in_deck`), the deck staying on its screen. Screenshots
+    ``deck-<name>-{first,panel,last}.jpg`` (and ``-overflow-cell<N>``) in ``results_dir``.
+    Returns the measurements and ``failures``."""
     failures, steps, visited = [], [], set()
     state = {"moved": None}
     types = slide_types(page)

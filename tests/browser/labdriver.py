@@ -167,7 +167,8 @@ _REPORT_JS = r"""
 (figureText) => {
   const figurePattern = new RegExp(figureText);
   // what a reader sees: pictures, formulas, tables, text blocks (their right edge must be in the column)
-  const VISIBLE = 'img, canvas, svg, mjx-container, table, pre, .widget-html-content, .widget-label, .widget-image, .jp-RenderedText';
+  const VISIBLE = 'img, canvas, svg, mjx-container, table, pre, '
+    + '.widget-html-content, .widget-label, .widget-image, .jp-RenderedText';
   const nb = NOTEBOOK.content;
   const column = nb.node.querySelector('.jp-Cell-outputArea, .jp-OutputArea');
   const cells = [];

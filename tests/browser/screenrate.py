@@ -1,4 +1,4 @@
-"""Page-side probes for the screen-rate measurements (issue 23), shared by JupyterLab's
+"""Page-side probes for the screen-rate measurements, shared by JupyterLab's
 tier (tests/browser) and the browser edition's (tests/lite).
 
 What counts as a *frame* of the figure, whatever the backend draws with:

@@ -1,4 +1,4 @@
-"""Each lecture notebook as a slide deck, at projector scale, in JupyterLab (issue 20).
+"""Each lecture notebook as a slide deck, at projector scale, in JupyterLab.
 
 For each lecture notebook (02-07) under ``%matplotlib widget`` (ipympl panels) and under the
 inline backend (panels as images), in a 1920x1080 window: a copy whose set-up cell also runs

@@ -1,4 +1,4 @@
-"""A JupyterLab that cannot run dhlab's canvas module still shows a working panel (issue 23, item 4).
+"""A JupyterLab that cannot run dhlab's canvas module still shows a working panel.
 
 Where the kernel has anywidget but the page does not (a hub whose JupyterLab runs in another
 environment than the course's kernel), the canvas backend's widget cannot be drawn: the page shows
@@ -11,14 +11,13 @@ seconds the figure is a picture of the robot, and a slider key changes it.
 from __future__ import annotations
 
 import json
-import os
 import time
 
 import numpy as np
 
 import labdriver
 from conftest import Server
-from labdriver import close_notebook, open_notebook, pixels, run_all
+from labdriver import close_notebook, open_notebook, run_all
 
 
 def test_a_page_without_anywidget_gets_the_png_figure(browser, tmp_path, results_dir, monkeypatch):

@@ -1,5 +1,5 @@
 """Keys reach a focused slider, the other keys still reach JupyterLab, and the inline figure is
-not dragged away (issue 23).
+not dragged away.
 
 JupyterLab's shortcuts read a key before the page's widgets: the panel's invisible
 ``SliderKeys`` widget (dhlab/views/keys.py + keys.js) puts ``data-lm-suppress-shortcuts`` on

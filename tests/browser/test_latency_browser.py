@@ -69,7 +69,9 @@ _PROBES_JS = f"""() => {{
   }};
   // inline backend: the Image widget's <img> loads its new PNG
   const output = nb.node;
-  output.addEventListener('load', (e) => {{ if (e.target.matches && e.target.matches('.widget-image')) painted(); }}, true);
+  output.addEventListener('load', (e) => {{
+    if (e.target.matches && e.target.matches('.widget-image')) painted();
+  }}, true);
   // ipympl: the figure's canvas receives the new pixels
   const drawImage = CanvasRenderingContext2D.prototype.drawImage;
   CanvasRenderingContext2D.prototype.drawImage = function (...args) {{

@@ -12,7 +12,6 @@ import shutil
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from labdriver import close_notebook, open_notebook, run_all, with_backend
 from test_latency_browser import execute

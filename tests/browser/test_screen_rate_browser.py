@@ -1,4 +1,4 @@
-"""Screen rate of the SSRMS teach panel, old backends and new, side by side in one run (issue 23).
+"""Screen rate of the SSRMS teach panel, old backends and new, side by side in one run.
 
 For each backend — the old ``"ipympl"`` and ``"image"`` (inline) paths and the new
 browser-side ``"canvas"`` (skipped, with the reason, until it imports) — at device

@@ -88,7 +88,8 @@ def test_a_spanish_notebook_runs_and_its_panel_moves(lab_page, lab_root, results
             changed, error = move_first_slider(page, output)
             moved.append(changed)
             if changed < MIN_CHANGED:
-                failures.append(f"cell {index}: moving the panel's first slider changed only {changed:.3%} of its figure")
+                failures.append(f"cell {index}: moving the panel's first slider changed only {changed:.3%} "
+                                "of its figure")
             if error:
                 failures.append(f"cell {index}: the panel shows {error!r}")
         failures += [f"after the slider moves: {line}" for line in problems(outputs_report(page))

@@ -49,8 +49,8 @@ def test_the_spanish_decks_keep_the_rules_too(stem):
     if not path.exists():
         pytest.skip(f"no Spanish edition of {stem} yet")
     found = deck_rules.problems(json.loads(path.read_text(encoding="utf-8")))
-    assert not found, f"es/{stem}: {len(found)} problems (python tests/support/deck_rules.py notebooks/es/{stem}.ipynb):\n" \
-                      + "\n".join(found[:25])
+    command = f"python tests/support/deck_rules.py notebooks/es/{stem}.ipynb"
+    assert not found, f"es/{stem}: {len(found)} problems ({command}):\n" + "\n".join(found[:25])
 
 
 def test_no_cell_is_lost_by_the_presenting_tool(lecture):

@@ -143,15 +143,18 @@ def test_table_tables_placed_by_dh_from_axes_are_accepted(case1, parallel):
     ([("q1", 0.5, 0.2, -90), ("q2 - 90", 0, 0.5, -90), ("q3", 0, 0, -90), ("q4", 0.5, 0, 0)],
      "joint 3: your α2 is -90°, but z1 and z2 (the axes of joints 2 and 3) are parallel: α2 must be 0° or 180°."),
     ([("q1", 0.5, 0.2, 0), ("q2 - 90", 0, 0.5, 0), ("q3", 0, 0, -90), ("q4", 0.5, 0, 0)],
-     "joint 2: your α1 is 0°, which keeps z1 parallel to z0, but z0 and z1 (the axes of joints 1 and 2) are at 90° to each other."),
+     "joint 2: your α1 is 0°, which keeps z1 parallel to z0, "
+     "but z0 and z1 (the axes of joints 1 and 2) are at 90° to each other."),
     ([("q1", 0.5, 0.2, 90), ("q2 - 90", 0, 0.5, 0), ("q3", 0, 0, -90), ("q4", 0.5, 0, 0)],
      "joint 2: z1 points against joint 2's positive sense"),
     ([("q1", 0.5, 0.2, -90), ("q2 - 90", 0, 0.5, 0), ("q3", 0, 0.1, -90), ("q4", 0.5, 0, 0)],
      "joint 4: your a3 = 0.1 puts z2 and z3 (the axes of joints 3 and 4) 0.1 apart, but they intersect, so a3 = 0."),
     ([("q1", 0.4, 0.2, -90), ("q2 - 90", 0, 0.5, 0), ("q3", 0, 0, -90), ("q4", 0.5, 0, 0)],
-     "joint 2: the axis has the right direction and distance from joint 1's axis, but sits at the wrong place along z0 at q = 0: check d1."),
+     "joint 2: the axis has the right direction and distance from joint 1's axis, "
+     "but sits at the wrong place along z0 at q = 0: check d1."),
     ([("q1", 0.5, 0.2, -90), ("q2", 0, 0.5, 0), ("q3", 0, 0, -90), ("q4", 0.5, 0, 0)],
-     "joint 3: the axis has the right direction and distance from joint 2's axis, but is turned about z1 at q = 0: check θ2"),
+     "joint 3: the axis has the right direction and distance from joint 2's axis, "
+     "but is turned about z1 at q = 0: check θ2"),
     ([("q1", 0.5, 0.2, -90), ("q2 - 90", 0.1, 0.5, 0), ("q3", 0, 0, -90), ("q4", 0.5, 0, 0)],
      "check d3 (or d2: z1 ∥ z2"),
     ([("q1", 0.5, 0.2, -90), ("q2 - 90", 0, 0.5, 0), ("q3", 0, 0, -90), ("q4", 0.4, 0, 0)],
@@ -520,5 +523,6 @@ def test_notebook_7_asks_exercise_7_1_before_printing_its_answer():
 def test_docstring_examples(module):
     import doctest
     import importlib
-    result = doctest.testmod(importlib.import_module(f"dhlab.course.{module}"), optionflags=doctest.NORMALIZE_WHITESPACE)
+    result = doctest.testmod(importlib.import_module(f"dhlab.course.{module}"),
+                             optionflags=doctest.NORMALIZE_WHITESPACE)
     assert result.failed == 0

@@ -29,7 +29,7 @@ def test_fmt_rounds_and_drops_negative_zero():
 
 def test_factors_latex_has_every_factor_once_on_two_lines():
     text = factors_latex(CONFIGURAR_TH)
-    for k, (d, alpha, a) in enumerate(CONFIGURAR_TH, start=1):
+    for k, (_d, alpha, a) in enumerate(CONFIGURAR_TH, start=1):
         assert rf"T_z[\theta_{k}," in text and rf"T_x[{alpha}^\circ, {a}]" in text
     assert text.count(r"T_z[") == 7 and text.count(r"T_x[") == 7 and text.count(r"\\") == 1
     assert factors_latex(CONFIGURAR_TH, per_line=7).count(r"\\") == 0

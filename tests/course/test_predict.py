@@ -107,7 +107,9 @@ def test_bad_input_is_a_clear_error(scara):
     for call in (lambda: row_prediction(scara, 0), lambda: row_prediction("robot", 1),
                  lambda: row_prediction(to_modified(scara), 1), lambda: row_prediction(scara, 1, q=[1, 2]),
                  lambda: Prediction("q", 1, 2), lambda: reveal([], print), lambda: reveal("p", print),
-                 lambda: case_prediction("a", "b"), lambda: case_prediction(((0, 0, 0), (0, 0, 0)), ((1, 0, 0), (0, 1, 0))),
-                 lambda: point_prediction("p", (1, 2), "why"), lambda: Prediction("q", print, print).check(1, show_me=1)):
+                 lambda: case_prediction("a", "b"),
+                 lambda: case_prediction(((0, 0, 0), (0, 0, 0)), ((1, 0, 0), (0, 1, 0))),
+                 lambda: point_prediction("p", (1, 2), "why"),
+                 lambda: Prediction("q", print, print).check(1, show_me=1)):
         with pytest.raises(DHLabError):
             call()

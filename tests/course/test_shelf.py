@@ -73,4 +73,5 @@ def test_cited_in_tells_the_truth():
     for short, (_, _, where) in shelf().items():
         assert where, f"{short}: 'cited in' names no notebook"
         really = {n for n, name in names.items() if name != SHELF and short in cites(markdown(name))}
-        assert where == really, f"{short}: notebook 9 says cited in {sorted(where)}, the notebooks cite it in {sorted(really)}"
+        assert where == really, (f"{short}: notebook 9 says cited in {sorted(where)}, "
+                                 f"the notebooks cite it in {sorted(really)}")

@@ -52,7 +52,8 @@ def test_the_link_reader():
 
 
 def test_the_anchor_rule():
-    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_markdown_cell("### Erratum 004-1\ntext\n## 2. `THx` *is* wrong")])
+    cell = nbformat.v4.new_markdown_cell("### Erratum 004-1\ntext\n## 2. `THx` *is* wrong")
+    nb = nbformat.v4.new_notebook(cells=[cell])
     assert anchors(nb) == {"Erratum-004-1", "2.-THx-is-wrong"}
 
 

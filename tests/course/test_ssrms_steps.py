@@ -201,4 +201,5 @@ def test_notebook_says_what_the_label_slips_do_and_keeps_one_notation():
     compiling = slips.split("000-5")[0]
     assert "000-3" in compiling and "000-4" in compiling
     assert re.search(r"not (?:affected|of the code)", slips), slips
-    assert not re.search(r"\\mathrm\{(?:Rot|Tras)\}|Rot_[xz]|T_z\(", text), "one name for a rotation, one for a translation"
+    other_names = r"\\mathrm\{(?:Rot|Tras)\}|Rot_[xz]|T_z\("
+    assert not re.search(other_names, text), "one name for a rotation, one for a translation"

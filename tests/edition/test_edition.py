@@ -141,7 +141,8 @@ def test_the_copy_passes(edition):
 
 def test_a_changed_english_sentence_fails_naming_the_cell_until_the_translation_is_revised(edition):
     cell_id = first_markdown_with(edition, "**Correct:**")
-    edition = edit_english(edition, cell_id, lambda nb, c: setattr(c, "source", c.source.replace("**Correct:**", "**Right:**")))
+    edition = edit_english(edition, cell_id,
+                           lambda nb, c: setattr(c, "source", c.source.replace("**Correct:**", "**Right:**")))
     problems = edition.check(SAMPLE)
     assert any(cell_id in p and "English text changed" in p for p in problems), problems
     with pytest.raises(EditionError, match=cell_id):
@@ -252,12 +253,14 @@ def test_changed_spanish_cell_ids_fail(edition):
 
 
 def test_changed_spanish_metadata_fail(edition):
-    problems = _edit_spanish(edition, lambda nb: nb.cells[1].metadata.update(slideshow={"slide_type": "skip"})).check(SAMPLE)
+    edited = _edit_spanish(edition, lambda nb: nb.cells[1].metadata.update(slideshow={"slide_type": "skip"}))
+    problems = edited.check(SAMPLE)
     assert any(nb_cell_id(edition, 1) in p and "metadata differ" in p for p in problems), problems
 
 
 def test_a_hand_edited_spanish_text_fails(edition):
-    problems = _edit_spanish(edition, lambda nb: setattr(nb.cells[0], "source", nb.cells[0].source + " ¡Hola!")).check(SAMPLE)
+    edited = _edit_spanish(edition, lambda nb: setattr(nb.cells[0], "source", nb.cells[0].source + " ¡Hola!"))
+    problems = edited.check(SAMPLE)
     assert any(nb_cell_id(edition, 0) in p and "not what build makes of the catalog" in p for p in problems), problems
 
 
@@ -429,7 +432,8 @@ def test_a_spanish_release_uses_the_editions_text(tmp_path):
                    "--language", "es"]) == 0
     released = json.loads((tmp_path / "out" / "ana.ipynb").read_text(encoding="utf-8"))
     edition = {c.id: c.source for c in REPO.spanish(ASSIGNMENT).cells}
-    same = [c for c in released["cells"] if c["cell_type"] == "markdown" and "".join(c["source"]) == edition.get(c["id"])]
+    same = [c for c in released["cells"]
+            if c["cell_type"] == "markdown" and "".join(c["source"]) == edition.get(c["id"])]
     texts = ["".join(c["source"]) for c in same]
     assert any(t.startswith("## Parte 2") for t in texts) and any(t.startswith("## Parte 3") for t in texts), \
         "the cells the variant does not change are the edition's"

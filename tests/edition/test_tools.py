@@ -88,7 +88,8 @@ def test_the_real_course_copied_leaves_the_tracked_files_unchanged(tmp_path):
     assert sc.main([str(copy)]) == 0
     assert status() == before
     assert (copy / "index.ipynb").exists() and (copy / "es").is_dir() and not (copy / "lecture_plans").exists()
-    assert files(copy) == {name: path.read_bytes().decode("utf-8", "replace") for name, path in sc.course_files().items()}
+    originals = sc.course_files()
+    assert files(copy) == {name: path.read_bytes().decode("utf-8", "replace") for name, path in originals.items()}
 
 
 def test_make_test_and_git_leave_the_student_s_copy_alone():

@@ -8,8 +8,8 @@ is in every book), and one strips the record. ``dhlab-grade --secret-file --rele
 must give the honest ones full marks, say what happened to the others, and grade those
 against the roster's variant (``--fallback roster``) or not at all (``--fallback none``).
 
-The solver lives in the tests (tests/support/solved_notebooks.py), not in the package: a function that solves a student's notebook
-must not ship with the course.
+The solver lives in the tests (tests/support/solved_notebooks.py), not in the package: a function
+that solves a student's notebook must not ship with the course.
 """
 import copy
 import csv
@@ -65,7 +65,8 @@ def handed_in(released):
     write(folder / "carla.ipynb", solved(forged, V.robot_of_variant(published)))
     stripped = copy.deepcopy(nbs["dora"])
     del stripped["metadata"]["dhlab"]
-    write(folder / "submitted" / "dora" / "ps8" / "08_puma_assignment.ipynb", solved(stripped, released_robot(nbs["dora"])))
+    write(folder / "submitted" / "dora" / "ps8" / "08_puma_assignment.ipynb",
+          solved(stripped, released_robot(nbs["dora"])))
     return folder
 
 
@@ -96,12 +97,14 @@ def test_the_class_is_graded_against_each_students_robot(released, handed_in, pa
     assert f"Robot graded against: your {released_robot(nbs['ana']).name} ({fp['ana']})" in feedback
 
     bruno = rows["bruno"]                            # carla's notebook handed in by bruno: named, graded as bruno's
-    assert (bruno["variant_status"], bruno["signed_for"], bruno["variant_source"]) == ("other_student", "carla", "roster")
+    assert (bruno["variant_status"], bruno["signed_for"], bruno["variant_source"]) == (
+        "other_student", "carla", "roster")
     assert "signed for 'carla', not for 'bruno'" in bruno["status"] and bruno["variant_id"] == fp["bruno"]
     assert float(bruno["score"]) < 7
 
     carla = rows["carla"]                            # the textbook PUMA in her metadata: tampered, graded as hers
-    assert (carla["variant_status"], carla["variant_source"], carla["variant_id"]) == ("tampered", "roster", fp["carla"])
+    assert (carla["variant_status"], carla["variant_source"], carla["variant_id"]) == (
+        "tampered", "roster", fp["carla"])
     assert "graded against the roster's variant for 'carla'" in carla["status"] and float(carla["score"]) < 7
 
     dora = rows["submitted/dora/ps8/08_puma_assignment"]      # nbgrader's layout; no record: her own robot

@@ -32,7 +32,8 @@ from support.grader import package_copy
 
 ROOT = Path(__file__).resolve().parents[2]
 VALID = ROOT / "tests" / "data" / "submissions" / "valid_alternative.ipynb"
-pytestmark = pytest.mark.skipif(os.geteuid() != 0, reason="the kernels run as their own users only when the grader is root")
+pytestmark = pytest.mark.skipif(os.geteuid() != 0,
+                                reason="the kernels run as their own users only when the grader is root")
 
 CANARY = "dhlab-canary-" + secrets.token_hex(6)
 NEEDLE = CANARY[::-1]                 # the notebooks search for the canary without holding it
@@ -312,7 +313,8 @@ def battery():
               after=['raise RuntimeError("FORK killed=%d" % killed)'])
     _notebook(subs / "threads.ipynb", before=[THREADS], after=['raise RuntimeError("THREADS n=%d" % n_threads)'])
     _notebook(subs / "display_huge.ipynb", before=[
-        'from IPython.display import display, HTML\nfor i in range(6):\n    display(HTML("<b>" + "x" * 10_000_000 + "</b>"))'])
+        'from IPython.display import display, HTML\n'
+        'for i in range(6):\n    display(HTML("<b>" + "x" * 10_000_000 + "</b>"))'])
     _notebook(subs / "print_flood.ipynb", before=["for i in range(3_000_000):\n    print('flood', i)"])
     _notebook(subs / "late_writer.ipynb", before=[fill(LATE_WRITER)])
     _notebook(subs / "monkeypatch.ipynb", after=[MONKEYPATCH])

@@ -6,7 +6,7 @@ import sys
 import time
 from pathlib import Path
 
-from dhlab.grading.run import isolation, reaper
+from dhlab.grading.run import isolation
 
 GRADER = r'''import os, sys, time
 from dhlab.grading.run import reaper

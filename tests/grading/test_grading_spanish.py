@@ -172,7 +172,8 @@ def test_spanish_words_are_accepted_where_words_are_asked():
         text = report.text()
     assert report.parts[0].full_marks, text
     with speaking("es"):
-        bad = check_all(parse_answers({**words, "x_cases": ["oblicuos", "paralelos", "se cruzan", "se cortan", "caso 1"]}))
+        not_a_case = ["oblicuos", "paralelos", "se cruzan", "se cortan", "caso 1"]
+        bad = check_all(parse_answers({**words, "x_cases": not_a_case}))
     assert "no es un caso" in bad.parts[0].text() and "se intersecan" in bad.parts[0].text()
 
 

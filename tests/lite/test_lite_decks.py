@@ -1,11 +1,11 @@
-"""Each lecture notebook as a slide deck in the browser edition (JupyterLite), offline (issue 20).
+"""Each lecture notebook as a slide deck in the browser edition (JupyterLite), offline.
 
 The same deck test as tests/browser/test_decks_browser.py, on the built site (``make lite``):
 in a cold browser that can reach nothing but the local site (conftest's ``visit``), a 1920x1080
 window, each lecture notebook is opened, its set-up cell gets ``dhlab.projector()`` (and, for
 the ipympl run, ``%matplotlib widget``; the browser edition's default is the inline backend),
 every cell is run, the deck is started from the toolbar's deck button and walked with Space to
-its end: no error output, no notes/skip cell on screen, every slide fits the window with body
+its end: no error output, no notes or skip cell on screen, every slide fits the window with body
 text of at least 24 px, every screen reached, and a slider dragged inside the deck redraws its
 figure. Measurements go to build/lite-measurements.json, screenshots to build/lite-screenshots/.
 

@@ -44,11 +44,17 @@ MOVES = 11                                    # slider moves timed on the SSRMS 
 JS_ARM = """(img) => {
   window.__pressed = null; window.__redrawn = null;
   const observer = new MutationObserver(() => {
-    if (window.__pressed !== null && window.__redrawn === null) { window.__redrawn = performance.now(); observer.disconnect(); }
+    if (window.__pressed !== null && window.__redrawn === null) {
+      window.__redrawn = performance.now();
+      observer.disconnect();
+    }
   });
   observer.observe(img, {attributes: true, attributeFilter: ['src']});
   const onKey = (event) => {
-    if (event.key === 'Enter') { window.__pressed = performance.now(); document.removeEventListener('keydown', onKey, true); }
+    if (event.key === 'Enter') {
+      window.__pressed = performance.now();
+      document.removeEventListener('keydown', onKey, true);
+    }
   };
   document.addEventListener('keydown', onKey, true);
 }"""

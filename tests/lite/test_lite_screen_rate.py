@@ -1,4 +1,4 @@
-"""The browser edition's counterpart of tests/browser/test_screen_rate_browser.py (issue 23).
+"""The browser edition's counterpart of tests/browser/test_screen_rate_browser.py.
 
 On the SSRMS notebook's first panel (07_ssrms.ipynb), in the built site:
 
@@ -39,7 +39,7 @@ BACKENDS = ["image", "canvas"]
 
 def use_backend(page, site, backend: str) -> None:
     """Make the notebook's panels use ``backend`` (``DHLAB_BACKEND`` in the kernel); the canvas
-    backend needs anywidget's extension in the site (lite/requirements.txt, since issue 23)."""
+    backend needs anywidget's extension in the site (lite/requirements.txt pins it)."""
     if backend == "canvas" and not (site / "extensions" / "anywidget").exists():
         pytest.skip("this site was built without anywidget: rebuild it (make lite) to measure the canvas backend")
     assert "ERROR" not in driver.execute(page, f"import os; os.environ['DHLAB_BACKEND'] = {backend!r}")

@@ -112,7 +112,7 @@ def test_rpy_roundtrip():
 
 def test_compared_with_an_independent_textbook_implementation():
     """A plain-loop reference (Modern Robotics style) on random DH tables with prismatic joints."""
-    for trial in range(20):
+    for _trial in range(20):
         n = RNG.integers(1, 8)
         kinds = RNG.integers(0, 2, n)
         params = RNG.uniform(-2, 2, (n, 4))

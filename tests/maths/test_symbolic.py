@@ -22,7 +22,8 @@ def parse_bmatrix(latex, q_symbols, params):
         entries = []
         for cell in row.split("&"):
             text = cell.strip()
-            text = re.sub(r"([CS])_(\d)", lambda m: f"{'cos' if m.group(1) == 'C' else 'sin'}({index[m.group(2)]})", text)
+            text = re.sub(r"([CS])_(\d)",
+                          lambda m: f"{'cos' if m.group(1) == 'C' else 'sin'}({index[m.group(2)]})", text)
             text = re.sub(r"([ld])_(\d)", r"\1\2", text)
             text = re.sub(r"(\w)\s+(\w)", r"\1*\2", text)
             local = {str(s): s for s in q_symbols} | {k: sp.Symbol(k) for k in params}

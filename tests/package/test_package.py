@@ -216,7 +216,8 @@ def test_import_graph_has_no_circle():
     report = []
     for component in found:
         members = set(component)
-        edges = [f"{file}:{line} -> {target}" for m in component for file, line, target in graph[m] if target in members]
+        edges = [f"{file}:{line} -> {target}"
+                 for m in component for file, line, target in graph[m] if target in members]
         report.append(" <-> ".join(component) + "\n    " + "\n    ".join(edges))
     assert not found, "import circles:\n" + "\n".join(report)
 

@@ -8,9 +8,9 @@ jupyterlab-slideshow, RISE and nbconvert read):
   on the next key press; a cell without a slide type (no ``slideshow`` key: what
   JupyterLab's property inspector writes for "-") continues the current screen. The
   literal ``"-"`` is refused: jupyterlab-slideshow 0.3.4 never shows such a cell
-  (measured in the browser; its presenter has no case for it); ``skip`` and ``notes`` cells are not on screen in the deck (``notes``
-  are the lecturer's notes, ``skip`` is self-study text) but a student reading
-  the notebook sees them as usual.
+  (measured in the browser; its presenter has no case for it); ``skip`` and ``notes``
+  cells are not on screen in the deck (``notes`` are the lecturer's notes, ``skip`` is
+  self-study text) but a student reading the notebook sees them as usual.
 - On one screen: at most ``MAX_WORDS`` words of prose (markdown outside math,
   code spans, HTML tags and link targets) and at most ``MAX_CODE_LINES`` lines
   of code whose source is shown (``metadata.jupyter.source_hidden`` hides it).

@@ -34,8 +34,14 @@ process.stdin.on("data", (d) => { text += d; });
 process.stdin.on("end", () => {
   const { calls } = JSON.parse(text);
   const out = calls.map(([name, ...args]) => {
-    if (name === "project") { const [P, data, at, n] = args; return Array.from(m.project(P, Float32Array.from(data, (v) => (v === null ? NaN : v)), at, n)); }
-    if (name === "depthOrder") { const [xy, f, k, sort] = args; return m.depthOrder(xy.map((v) => (v === null ? NaN : v)), f, k, sort); }
+    if (name === "project") {
+      const [P, data, at, n] = args;
+      return Array.from(m.project(P, Float32Array.from(data, (v) => (v === null ? NaN : v)), at, n));
+    }
+    if (name === "depthOrder") {
+      const [xy, f, k, sort] = args;
+      return m.depthOrder(xy.map((v) => (v === null ? NaN : v)), f, k, sort);
+    }
     return m[name](...args);
   });
   process.stdout.write(JSON.stringify(out, (k, v) => (Number.isNaN(v) ? null : v)));

@@ -12,10 +12,50 @@ from dhlab.views.matrices import COLUMN_PX, latex_width_px, show_matrix
 # Outputs of the stored notebooks whose rendered width was measured in JupyterLab 4 (Chromium,
 # 1400 px window): (px, the LaTeX as stored).
 MEASURED = {
-    '03_H02_product': (1172, '$\\displaystyle {}^0H_2 = {}^0H_1\\,{}^1H_2 = \\left[\\begin{matrix}- \\sin{\\left(\\theta_{0} \\right)} \\sin{\\left(\\theta_{1} \\right)} + \\cos{\\left(\\theta_{0} \\right)} \\cos{\\left(\\theta_{1} \\right)} & - \\sin{\\left(\\theta_{0} \\right)} \\cos{\\left(\\theta_{1} \\right)} - \\sin{\\left(\\theta_{1} \\right)} \\cos{\\left(\\theta_{0} \\right)} & 0 & - l_{1} \\sin{\\left(\\theta_{0} \\right)} - l_{2} \\sin{\\left(\\theta_{0} \\right)} \\sin{\\left(\\theta_{1} \\right)} + l_{2} \\cos{\\left(\\theta_{0} \\right)} \\cos{\\left(\\theta_{1} \\right)}\\\\\\sin{\\left(\\theta_{0} \\right)} \\cos{\\left(\\theta_{1} \\right)} + \\sin{\\left(\\theta_{1} \\right)} \\cos{\\left(\\theta_{0} \\right)} & - \\sin{\\left(\\theta_{0} \\right)} \\sin{\\left(\\theta_{1} \\right)} + \\cos{\\left(\\theta_{0} \\right)} \\cos{\\left(\\theta_{1} \\right)} & 0 & l_{1} \\cos{\\left(\\theta_{0} \\right)} + l_{2} \\sin{\\left(\\theta_{0} \\right)} \\cos{\\left(\\theta_{1} \\right)} + l_{2} \\sin{\\left(\\theta_{1} \\right)} \\cos{\\left(\\theta_{0} \\right)}\\\\0 & 0 & 1 & 0\\\\0 & 0 & 0 & 1\\end{matrix}\\right]$'),
-    '06_T6': (2025, '$\\displaystyle {}^0T_6 = \\left[\\begin{matrix}C_{6} \\left(C_{1} S_{23} S_{5} + C_{5} \\left(C_{1} C_{23} S_{4} + C_{4} S_{1}\\right)\\right) + S_{6} \\left(C_{1} C_{23} C_{4} - S_{1} S_{4}\\right) & C_{6} \\left(C_{1} C_{23} C_{4} - S_{1} S_{4}\\right) - S_{6} \\left(C_{1} S_{23} S_{5} + C_{5} \\left(C_{1} C_{23} S_{4} + C_{4} S_{1}\\right)\\right) & - C_{1} C_{5} S_{23} + S_{5} \\left(C_{1} C_{23} S_{4} + C_{4} S_{1}\\right) & - C_{1} S_{2} l_{2} - C_{1} S_{23} l_{3} + l_{4} \\left(- C_{1} C_{5} S_{23} + S_{5} \\left(C_{1} C_{23} S_{4} + C_{4} S_{1}\\right)\\right)\\\\C_{6} \\left(C_{5} \\left(- C_{1} C_{4} + C_{23} S_{1} S_{4}\\right) + S_{1} S_{23} S_{5}\\right) + S_{6} \\left(C_{1} S_{4} + C_{23} C_{4} S_{1}\\right) & C_{6} \\left(C_{1} S_{4} + C_{23} C_{4} S_{1}\\right) - S_{6} \\left(C_{5} \\left(- C_{1} C_{4} + C_{23} S_{1} S_{4}\\right) + S_{1} S_{23} S_{5}\\right) & - C_{5} S_{1} S_{23} + S_{5} \\left(- C_{1} C_{4} + C_{23} S_{1} S_{4}\\right) & - S_{1} S_{2} l_{2} - S_{1} S_{23} l_{3} + l_{4} \\left(- C_{5} S_{1} S_{23} + S_{5} \\left(- C_{1} C_{4} + C_{23} S_{1} S_{4}\\right)\\right)\\\\C_{4} S_{23} S_{6} + C_{6} \\left(- C_{23} S_{5} + C_{5} S_{23} S_{4}\\right) & C_{4} C_{6} S_{23} - S_{6} \\left(- C_{23} S_{5} + C_{5} S_{23} S_{4}\\right) & C_{23} C_{5} + S_{23} S_{4} S_{5} & C_{2} l_{2} + C_{23} l_{3} + l_{1} + l_{4} \\left(C_{23} C_{5} + S_{23} S_{4} S_{5}\\right)\\\\0 & 0 & 0 & 1\\end{matrix}\\right]$'),
-    '06_p': (1082, '$\\displaystyle p = \\left[\\begin{matrix}- C_{1} C_{2} S_{3} l_{2} - C_{3} S_{1} l_{2} - S_{1} l_{1} + l_{3} \\left(- C_{1} C_{2} C_{3} + S_{1} S_{3}\\right) + l_{4} \\left(- C_{5} \\left(C_{1} C_{2} C_{3} - S_{1} S_{3}\\right) + S_{5} \\left(C_{1} S_{2} S_{4} + C_{4} \\left(C_{1} C_{2} S_{3} + C_{3} S_{1}\\right)\\right)\\right)\\\\C_{1} C_{3} l_{2} + C_{1} l_{1} - C_{2} S_{1} S_{3} l_{2} + l_{3} \\left(- C_{1} S_{3} - C_{2} C_{3} S_{1}\\right) + l_{4} \\left(- C_{5} \\left(C_{1} S_{3} + C_{2} C_{3} S_{1}\\right) + S_{5} \\left(C_{4} \\left(- C_{1} C_{3} + C_{2} S_{1} S_{3}\\right) + S_{1} S_{2} S_{4}\\right)\\right)\\\\C_{3} S_{2} l_{3} + S_{2} S_{3} l_{2} + l_{4} \\left(C_{3} C_{5} S_{2} + S_{5} \\left(C_{2} S_{4} - C_{4} S_{2} S_{3}\\right)\\right)\\end{matrix}\\right]$'),
-    '07_product': (1338, '$\\displaystyle T = T_z[\\theta_1, \\frac{5}{2}]\\,T_x[-90^\\circ, 0]\\cdot T_z[\\theta_2, 6]\\,T_x[-90^\\circ, 0]\\cdot T_z[\\theta_3, 6]\\,T_x[0^\\circ, 12]\\cdot T_z[\\theta_4, 1]\\,T_x[0^\\circ, 12]\\cdot T_z[\\theta_5, 6]\\,T_x[-90^\\circ, 0]\\cdot T_z[\\theta_6, 6]\\,T_x[-90^\\circ, 0]\\cdot T_z[\\theta_7, 0]\\,T_x[0^\\circ, 0]$'),
+    '03_H02_product': (1172, '$\\displaystyle {}^0H_2 = {}^0H_1\\,{}^1H_2 = \\left[\\begin{matrix}- '
+                             '\\sin{\\left(\\theta_{0} \\right)} \\sin{\\left(\\theta_{1} \\right)} + '
+                             '\\cos{\\left(\\theta_{0} \\right)} \\cos{\\left(\\theta_{1} \\right)} & - '
+                             '\\sin{\\left(\\theta_{0} \\right)} \\cos{\\left(\\theta_{1} \\right)} - '
+                             '\\sin{\\left(\\theta_{1} \\right)} \\cos{\\left(\\theta_{0} \\right)} & 0 & - l_{1} '
+                             '\\sin{\\left(\\theta_{0} \\right)} - l_{2} \\sin{\\left(\\theta_{0} \\right)} '
+                             '\\sin{\\left(\\theta_{1} \\right)} + l_{2} \\cos{\\left(\\theta_{0} \\right)} '
+                             '\\cos{\\left(\\theta_{1} \\right)}\\\\\\sin{\\left(\\theta_{0} \\right)} '
+                             '\\cos{\\left(\\theta_{1} \\right)} + \\sin{\\left(\\theta_{1} \\right)} '
+                             '\\cos{\\left(\\theta_{0} \\right)} & - \\sin{\\left(\\theta_{0} \\right)} '
+                             '\\sin{\\left(\\theta_{1} \\right)} + \\cos{\\left(\\theta_{0} \\right)} '
+                             '\\cos{\\left(\\theta_{1} \\right)} & 0 & l_{1} \\cos{\\left(\\theta_{0} \\right)} + '
+                             'l_{2} \\sin{\\left(\\theta_{0} \\right)} \\cos{\\left(\\theta_{1} \\right)} + l_{2} '
+                             '\\sin{\\left(\\theta_{1} \\right)} \\cos{\\left(\\theta_{0} \\right)}\\\\0 & 0 & 1 & '
+                             '0\\\\0 & 0 & 0 & 1\\end{matrix}\\right]$'),
+    '06_T6': (2025, '$\\displaystyle {}^0T_6 = \\left[\\begin{matrix}C_{6} \\left(C_{1} S_{23} S_{5} + C_{5} '
+                    '\\left(C_{1} C_{23} S_{4} + C_{4} S_{1}\\right)\\right) + S_{6} \\left(C_{1} C_{23} C_{4} - '
+                    'S_{1} S_{4}\\right) & C_{6} \\left(C_{1} C_{23} C_{4} - S_{1} S_{4}\\right) - S_{6} '
+                    '\\left(C_{1} S_{23} S_{5} + C_{5} \\left(C_{1} C_{23} S_{4} + C_{4} S_{1}\\right)\\right) & - '
+                    'C_{1} C_{5} S_{23} + S_{5} \\left(C_{1} C_{23} S_{4} + C_{4} S_{1}\\right) & - C_{1} S_{2} '
+                    'l_{2} - C_{1} S_{23} l_{3} + l_{4} \\left(- C_{1} C_{5} S_{23} + S_{5} \\left(C_{1} C_{23} '
+                    'S_{4} + C_{4} S_{1}\\right)\\right)\\\\C_{6} \\left(C_{5} \\left(- C_{1} C_{4} + C_{23} S_{1} '
+                    'S_{4}\\right) + S_{1} S_{23} S_{5}\\right) + S_{6} \\left(C_{1} S_{4} + C_{23} C_{4} '
+                    'S_{1}\\right) & C_{6} \\left(C_{1} S_{4} + C_{23} C_{4} S_{1}\\right) - S_{6} \\left(C_{5} '
+                    '\\left(- C_{1} C_{4} + C_{23} S_{1} S_{4}\\right) + S_{1} S_{23} S_{5}\\right) & - C_{5} '
+                    'S_{1} S_{23} + S_{5} \\left(- C_{1} C_{4} + C_{23} S_{1} S_{4}\\right) & - S_{1} S_{2} l_{2} '
+                    '- S_{1} S_{23} l_{3} + l_{4} \\left(- C_{5} S_{1} S_{23} + S_{5} \\left(- C_{1} C_{4} + '
+                    'C_{23} S_{1} S_{4}\\right)\\right)\\\\C_{4} S_{23} S_{6} + C_{6} \\left(- C_{23} S_{5} + '
+                    'C_{5} S_{23} S_{4}\\right) & C_{4} C_{6} S_{23} - S_{6} \\left(- C_{23} S_{5} + C_{5} S_{23} '
+                    'S_{4}\\right) & C_{23} C_{5} + S_{23} S_{4} S_{5} & C_{2} l_{2} + C_{23} l_{3} + l_{1} + '
+                    'l_{4} \\left(C_{23} C_{5} + S_{23} S_{4} S_{5}\\right)\\\\0 & 0 & 0 & 1\\end{matrix}\\right]$'),
+    '06_p': (1082, '$\\displaystyle p = \\left[\\begin{matrix}- C_{1} C_{2} S_{3} l_{2} - C_{3} S_{1} l_{2} - '
+                   'S_{1} l_{1} + l_{3} \\left(- C_{1} C_{2} C_{3} + S_{1} S_{3}\\right) + l_{4} \\left(- C_{5} '
+                   '\\left(C_{1} C_{2} C_{3} - S_{1} S_{3}\\right) + S_{5} \\left(C_{1} S_{2} S_{4} + C_{4} '
+                   '\\left(C_{1} C_{2} S_{3} + C_{3} S_{1}\\right)\\right)\\right)\\\\C_{1} C_{3} l_{2} + C_{1} '
+                   'l_{1} - C_{2} S_{1} S_{3} l_{2} + l_{3} \\left(- C_{1} S_{3} - C_{2} C_{3} S_{1}\\right) + '
+                   'l_{4} \\left(- C_{5} \\left(C_{1} S_{3} + C_{2} C_{3} S_{1}\\right) + S_{5} \\left(C_{4} '
+                   '\\left(- C_{1} C_{3} + C_{2} S_{1} S_{3}\\right) + S_{1} S_{2} S_{4}\\right)\\right)\\\\C_{3} '
+                   'S_{2} l_{3} + S_{2} S_{3} l_{2} + l_{4} \\left(C_{3} C_{5} S_{2} + S_{5} \\left(C_{2} S_{4} - '
+                   'C_{4} S_{2} S_{3}\\right)\\right)\\end{matrix}\\right]$'),
+    '07_product': (1338, '$\\displaystyle T = T_z[\\theta_1, \\frac{5}{2}]\\,T_x[-90^\\circ, 0]\\cdot '
+                         'T_z[\\theta_2, 6]\\,T_x[-90^\\circ, 0]\\cdot T_z[\\theta_3, 6]\\,T_x[0^\\circ, 12]\\cdot '
+                         'T_z[\\theta_4, 1]\\,T_x[0^\\circ, 12]\\cdot T_z[\\theta_5, 6]\\,T_x[-90^\\circ, 0]\\cdot '
+                         'T_z[\\theta_6, 6]\\,T_x[-90^\\circ, 0]\\cdot T_z[\\theta_7, 0]\\,T_x[0^\\circ, 0]$'),
 }
 
 

@@ -112,7 +112,7 @@ def test_the_browsers_picture_of_a_new_pose_is_the_kernels():
     jobs, checks = [], []
     for name, panel in panels():
         live = panel.view.live
-        live.widget
+        _ = live.widget   # building the widget must not raise
         rig_content, rig_numbers = live.rig.describe(live.moving)
         before, data = scene(panel)
         q1 = random_q(panel.robot, rng)
@@ -353,7 +353,7 @@ def test_without_a_browser_every_step_is_framed_at_once():
     limits = []
     for backend in ("canvas", "image"):
         panel = dhlab.teach(dhlab.robots.ssrms(), backend=backend)
-        panel.view.live.widget
+        _ = panel.view.live.widget   # building the widget must not raise
         sweep(panel)
         assert not panel.view.live.waits_for_rest
         limits.append(panel.view.limits)
@@ -406,7 +406,7 @@ def test_the_spaces_panel_moves_its_mechanism_in_the_browser_too():
     panel = dhlab.spaces(robot, backend="canvas",
                          ik=lambda x, y: dhlab.ik.pr_mechanism_ik(robot, x, y))
     live = panel.view.live
-    live.widget
+    _ = live.widget   # building the widget must not raise
     rig, rig_numbers = live.rig.describe(live.moving)
     assert rig["sliders"] == [s.model_id for s in panel.sliders]
     before, data = scene(panel)

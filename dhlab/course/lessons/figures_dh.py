@@ -137,7 +137,8 @@ def dh_parameters_figure(theta_deg: float = 50.0, d: float = 1.2, a: float = 1.2
 
 
 # --- exercise 5.1: the joint axes, and after the answer their common normals --------------------------
-_EXERCISE_CAMERA = dict(elev=22, azim=-74)      # z_1 passes beside z_0, not across it (tests/course/test_course_figures.py)
+# z_1 passes beside z_0, not across it (tests/course/test_course_figures.py)
+_EXERCISE_CAMERA = dict(elev=22, azim=-74)
 
 
 def _name_at(p, u, length):

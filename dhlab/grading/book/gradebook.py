@@ -30,8 +30,8 @@ from pathlib import Path
 
 from ...i18n import N_, _
 
-__all__ = ["COLUMNS", "VARIANT_COLUMNS", "PART_COLUMNS", "GRADE_AGAIN", "REMOVED", "write_atomic", "write_csv", "read_csv",
-           "feedback_filename", "Cells", "error_text", "cell_error", "status_text", "feedback_text",
+__all__ = ["COLUMNS", "VARIANT_COLUMNS", "PART_COLUMNS", "GRADE_AGAIN", "REMOVED", "write_atomic", "write_csv",
+           "read_csv", "feedback_filename", "Cells", "error_text", "cell_error", "status_text", "feedback_text",
            "not_graded_feedback", "grade_again", "assignment_cells"]
 
 PART_COLUMNS = {"part1": "part1_sketch", "part2": "part2_links", "part3": "part3_transforms"}
@@ -166,7 +166,7 @@ class Cells:
         return sorted(parts | ({stub} if stub else set()))
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def assignment_cells() -> tuple:
     """(the code of every locked cell of the assignment, as handed out or released with a personal
     robot; the first line of the released "Your robot" cell, which the grader rewrites; the part
@@ -323,7 +323,8 @@ def feedback_text(submission: str, run: dict, report, status: str, robot_lines=(
         lines += [head, *[f"  - {d}" for d in details], ""]
     from ...assignment.family import shown_name
 
-    robot = (_("your {robot}").format(robot=shown_name(report.robot)) if report.robot != "PUMA 560" else _("the PUMA 560"))
+    robot = (_("your {robot}").format(robot=shown_name(report.robot)) if report.robot != "PUMA 560"
+             else _("the PUMA 560"))
     lines.append(_("Your answers were read from the variables n_links, n_joints, joint_types, x_cases, link_points, "
                    "T1…T{n} and chain after your notebook ran, and checked by the grader against {robot}.").format(
         n=report.n, robot=robot))

@@ -47,14 +47,17 @@ class Progress:
 
 
 # (the start of a status, as dhlab.grading.book.gradebook writes it in the teacher's language; its label)
-STATUS_KINDS = [("ok", "ok"), (N_("not answered"), N_("not answered")), (N_("invalid notebook"), N_("invalid notebook")),
+STATUS_KINDS = [("ok", "ok"), (N_("not answered"), N_("not answered")),
+                (N_("invalid notebook"), N_("invalid notebook")),
                 (N_("error in cell"), N_("errors")), (N_("memory limit"), N_("memory limit")),
                 (N_("timeout"), N_("timeout")), (N_("output limit"), N_("output limit")),
                 (N_("kernel died"), N_("kernel died")), (N_("could not be interrupted"), N_("hung")),
-                (N_("runner was killed"), N_("runner killed")), (N_("time limit for the whole"), N_("notebook time limit")),
+                (N_("runner was killed"), N_("runner killed")),
+                (N_("time limit for the whole"), N_("notebook time limit")),
                 (N_("answers not read"), N_("answers not read")), (N_("modifies dhlab"), N_("modifies dhlab")),
                 ("grader error", "grader error"), (N_("variant missing"), N_("variant missing")),
-                (N_("variant tampered"), N_("variant tampered")), (N_("variant other_student"), N_("a classmate's variant")),
+                (N_("variant tampered"), N_("variant tampered")),
+                (N_("variant other_student"), N_("a classmate's variant")),
                 (N_("student not identified"), N_("student unknown"))]
 
 
@@ -73,7 +76,8 @@ def summary(rows, seconds, jobs) -> str:
     mean = (_("Mean score {mean}/{max}").format(mean=f"{sum(scores) / len(scores):.2f}", max=rows[0]["max_score"])
             if scores else _("No score"))
     left = n - len(scored)
-    again = _("; not graded (grader error): {left}, run the same command with --resume").format(left=left) if left else ""
+    again = (_("; not graded (grader error): {left}, run the same command with --resume").format(left=left)
+             if left else "")
     graded = (_("Graded {n} submission in {seconds} s with -j {jobs} ({per} s per submission).") if n == 1 else
               _("Graded {n} submissions in {seconds} s with -j {jobs} ({per} s per submission)."))
     return "\n".join([

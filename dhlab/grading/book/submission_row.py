@@ -38,7 +38,8 @@ def grade_submission(staged, options, iso=None) -> dict:
     if missing:                                   # gone before it ran: the grader's problem
         run = {"grader_error": missing}
     elif staged.copy is None:                     # the grader ran out of memory or disk on it: its fault
-        run = {"grader_error": staged.error} if getattr(staged, "grader_fault", False) else {"notebook_error": staged.error}
+        fault = "grader_error" if getattr(staged, "grader_fault", False) else "notebook_error"
+        run = {fault: staged.error}
     else:
         run = run_submission(staged, options, iso)
     run["file"] = staged.file
@@ -215,7 +216,8 @@ def _not_graded_row(staged, info) -> dict:
            **GV.columns(info)}
     with speaking(_language(staged)):
         row["_feedback_text"] = "\n".join([
-            _("Submission: {submission}").format(submission=staged.submission), _("File: {file}").format(file=staged.file),
+            _("Submission: {submission}").format(submission=staged.submission),
+            _("File: {file}").format(file=staged.file),
             _("Status: {status}").format(status=GV.status_note(info)), "",
             _("Not graded: your teacher will look at this submission."), ""])
     row["_language"] = _language(staged)

@@ -38,7 +38,8 @@ def _parser() -> argparse.ArgumentParser:
     gs.add_argument("--isolation", choices=("auto", "user", "none"), default="auto")
     gs.add_argument("--source", type=Path, default=None,
                     help="the teacher's solution notebook, which the autograder grades first as a self-check "
-                         "(default: tools/teacher/08_puma_assignment.ipynb of the course's repository, when run from it)")
+                         "(default: tools/teacher/08_puma_assignment.ipynb of the course's repository, "
+                         "when run from it)")
     tr = sub.add_parser("try-gradescope", help=_("run an autograder.zip here, as Gradescope would"))
     tr.add_argument("zip", type=Path)
     tr.add_argument("notebook", type=Path)

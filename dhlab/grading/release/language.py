@@ -36,7 +36,8 @@ LANGUAGE_COLUMNS = ("language", "idioma", "lang")
 STEM = "08_puma_assignment"
 # the Spanish edition's text of the assignment, cell id -> {"en": English source, "es": its translation}
 SPANISH_TEXTS = Path(__file__).resolve().parents[1] / "template" / f"{STEM}.es.json"     # dhlab/grading/template/
-INTRO_CELL_ID = "dhlab-your-robot-intro"   # release_notebook's "Your robot" cell, when the template has no "## The robot"
+# release_notebook's "Your robot" cell, when the template has no "## The robot"
+INTRO_CELL_ID = "dhlab-your-robot-intro"
 SET_LANGUAGE = re.compile(r'dhlab\.set_language\(\s*["\'](\w+)["\']\s*\)')
 
 

@@ -56,9 +56,9 @@ from ...i18n import _, language_option
 from .language import default_language, in_language, in_spanish, mark_language, roster_languages
 from .roster import ID_COLUMNS, checked_id, csv_rows, look_alikes, read_roster, safe_filename  # noqa: F401  (API)
 
-__all__ = ["read_roster", "checked_id", "look_alikes", "previous_release", "safe_filename", "release_notebook", "release", "main", "TEMPLATE",
-           "ID_COLUMNS", "SEAM_CELL_ID", "DEFAULT_SECRET_FILE", "seam_source", "load_teacher_records",
-           "submission_variant", "prepare_submission"]
+__all__ = ["read_roster", "checked_id", "look_alikes", "previous_release", "safe_filename", "release_notebook",
+           "release", "main", "TEMPLATE", "ID_COLUMNS", "SEAM_CELL_ID", "DEFAULT_SECRET_FILE", "seam_source",
+           "load_teacher_records", "submission_variant", "prepare_submission"]
 
 TEMPLATE = generate.TEMPLATE          # the student notebook, package data (no solutions in it)
 DEFAULT_SECRET_FILE = Path("dhlab-secret.key")
@@ -285,7 +285,8 @@ def _main(argv) -> int:
     rel.add_argument("--family", default="puma560",
                      help=_("robot(s) to draw from: a key, a comma-separated list, or 'all' (default puma560)"))
     rel.add_argument("--secret-file", default=None,
-                     help=_("the teacher's secret (default {file}, made when missing)").format(file=DEFAULT_SECRET_FILE))
+                     help=_("the teacher's secret (default {file}, made when missing)").format(
+                         file=DEFAULT_SECRET_FILE))
     rel.add_argument("--id-column", default=None,
                      help=_("the roster's id column (default: {names})").format(names=", ".join(ID_COLUMNS)))
     rel.add_argument("--template", default=str(TEMPLATE), help=_("the student notebook to start from"))

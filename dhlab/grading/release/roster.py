@@ -18,7 +18,8 @@ from pathlib import Path
 from ...i18n import _
 from ...validation import DHLabError
 
-__all__ = ["ID_COLUMNS", "RESERVED", "csv_rows", "read_roster", "checked_id", "look_alikes", "id_column_index", "safe_filename"]
+__all__ = ["ID_COLUMNS", "RESERVED", "csv_rows", "read_roster", "checked_id", "look_alikes", "id_column_index",
+           "safe_filename"]
 
 ID_COLUMNS = ("id", "student_id", "student", "username", "login",
               "identificador", "id_estudiante", "id estudiante", "estudiante", "usuario", "nombre de usuario",
@@ -104,10 +105,10 @@ def look_alikes(where, roster_name: str) -> None:
         if key in seen:
             first, first_line = seen[key]
             at = _(" (rows {first} and {second})").format(first=first_line, second=line) if line else ""
-            raise DHLabError(_("roster {name}: the ids {first!r} and {second!r} are the same name written two ways "
-                               "(Unicode NFC and NFD){at}: two students to the grader, one to the eye; retype one of them "
-                               "in the roster so that both are spelled the same way, or make them different ids.").format(
-                name=roster_name, first=first, second=sid, at=at))
+            raise DHLabError(_("roster {name}: the ids {first!r} and {second!r} are the same name written two "
+                               "ways (Unicode NFC and NFD){at}: two students to the grader, one to the eye; retype "
+                               "one of them in the roster so that both are spelled the same way, or make them "
+                               "different ids.").format(name=roster_name, first=first, second=sid, at=at))
         seen[key] = (sid, line)
 
 

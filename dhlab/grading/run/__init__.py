@@ -2,7 +2,8 @@
 
 * :mod:`~dhlab.grading.run.staging` — every submission copied, code only, before any runs;
 * :mod:`~dhlab.grading.run.notebook_code` — a notebook's code read with limits, and what it does to dhlab;
-* :mod:`~dhlab.grading.run.launch` — one runner process per submission (:func:`~dhlab.grading.run.launch.run_submission`);
+* :mod:`~dhlab.grading.run.launch` — one runner process per submission
+  (:func:`~dhlab.grading.run.launch.run_submission`);
 * :mod:`~dhlab.grading.run.runner` — that process: one notebook in a fresh kernel, its answers as plain data
   (started as a script, it reads only its neighbours ``notebook_code.py``, ``sandbox.py``, ``cgroups.py`` and
   ``dhlab/assignment/encode.py``, never the whole package);

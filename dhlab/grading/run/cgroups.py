@@ -107,7 +107,8 @@ class SubmissionGroup:
             if key == "oom_kill" and value.strip().isdigit():
                 return int(value)
         if self.kind == "v1":            # kernels before 4.13 have no oom_kill count: the limit was hit
-            failcnt = _read(os.path.join(memory, "memory.memsw.failcnt")) or _read(os.path.join(memory, "memory.failcnt"))
+            failcnt = (_read(os.path.join(memory, "memory.memsw.failcnt"))
+                       or _read(os.path.join(memory, "memory.failcnt")))
             return 1 if failcnt and failcnt.strip() not in ("", "0") else 0
         return 0
 

@@ -159,7 +159,7 @@ def _ensure_user(name: str):
                                "--shell", "/usr/sbin/nologin", "--user-group", name],
                               capture_output=True, text=True)
         if proc.returncode != 0:
-            raise OSError(proc.stderr.strip() or f"useradd exit {proc.returncode}")
+            raise OSError(proc.stderr.strip() or f"useradd exit {proc.returncode}") from None
         entry = pwd.getpwnam(name)
     if entry.pw_uid == 0:
         raise OSError(f"user {name} is root")
@@ -168,7 +168,10 @@ def _ensure_user(name: str):
 
 def _lock_folder() -> Path:
     """Root's own folder for the users' locks: only root can create, take or remove a lock."""
-    folder = Path("/run/dhlab-grade") if os.access("/run", os.W_OK) else Path(tempfile.gettempdir(), "dhlab-grade-locks")
+    if os.access("/run", os.W_OK):
+        folder = Path("/run/dhlab-grade")
+    else:
+        folder = Path(tempfile.gettempdir(), "dhlab-grade-locks")
     folder.mkdir(mode=0o700, exist_ok=True)
     info = folder.lstat()
     if not stat.S_ISDIR(info.st_mode) or info.st_uid != 0 or info.st_mode & 0o077:

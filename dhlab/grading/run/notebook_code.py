@@ -25,9 +25,9 @@ except ImportError:          # loaded as a plain script by the runner: its messa
     def _(message: str) -> str:
         return message
 
-__all__ = ["NotebookError", "read_code_cells", "read_notebook_bytes", "read_notebook_json", "check_notebook_bytes", "code_cells_of",
-           "memory_to_read", "scan_for_tampering", "MAX_NOTEBOOK_BYTES", "MAX_JSON_VALUES", "MAX_READ_BYTES",
-           "MAX_CODE_BYTES"]
+__all__ = ["NotebookError", "read_code_cells", "read_notebook_bytes", "read_notebook_json", "check_notebook_bytes",
+           "code_cells_of", "memory_to_read", "scan_for_tampering", "MAX_NOTEBOOK_BYTES", "MAX_JSON_VALUES",
+           "MAX_READ_BYTES", "MAX_CODE_BYTES"]
 
 # What one file may cost the grader. Python's JSON reader needs far more memory than the file
 # (a 198 MB file of ``[],[],…`` needs about 5 GB; one emoji makes Python keep the text at 4 bytes
@@ -124,7 +124,8 @@ def read_notebook_json(raw: bytes, checked: bool = False):
     except RecursionError:
         raise NotebookError(_("not a notebook: its JSON is nested too deeply to read")) from None
     except ValueError as e:
-        raise NotebookError(_("not a notebook: the file is not valid JSON ({error})").format(error=str(e)[:80])) from None
+        raise NotebookError(_("not a notebook: the file is not valid JSON ({error})").format(
+            error=str(e)[:80])) from None
 
 
 def read_code_cells(path=None, raw: bytes | None = None) -> list:

@@ -49,7 +49,8 @@ class Staged:
     error: str = ""          # why it cannot be run
     variant: object = None   # with variants: the VariantInfo it is graded by (dhlab.grading.book.grade_variants)
     language: str = ""       # the student's language ('en'/'es'; '' when the notebook does not say)
-    grader_fault: bool = False   # True when ``error`` is the grader's failure (out of memory, disk full), not the file's
+    # True when ``error`` is the grader's failure (out of memory, disk full), not the file's
+    grader_fault: bool = False
 
 
 def find_submissions(folder: Path) -> list:

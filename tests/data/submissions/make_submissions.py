@@ -84,16 +84,20 @@ P3_BAD = P3.replace("T2 = Tz(q2, 0) @ Tx(0, 0.4318)", "T2 = Tz(q2, 0) @ Tx(-90, 
 P3_BAD = P3_BAD.replace("T6 = Tz(q6, 0) @ Tx(0, 0)", "T6 = Tz(q6, 0.056) @ Tx(0, 0)")
 make("mistake_part3.ipynb", {**ALL, "part3_answers": P3_BAD})
 
-make("hostile_raises.ipynb", {**ALL, "part2_answers": "link_points = {k: frame_points(k) for k in range(7)}   # a helper I never wrote"},
+make("hostile_raises.ipynb",
+     {**ALL, "part2_answers": "link_points = {k: frame_points(k) for k in range(7)}   # a helper I never wrote"},
      extra=[("part1_check", 'raise RuntimeError("I give up on this cell")')])
 make("hostile_hangs.ipynb", ALL, extra=[("part2_check", "while True:\n    pass")])
 make("hostile_ignores_interrupt.ipynb", ALL, extra=[("part2_check",
      "import time\nwhile True:\n    try:\n        time.sleep(1)\n    except KeyboardInterrupt:\n        pass")])
-make("hostile_prints.ipynb", ALL, extra=[("part1_check", 'print("x" * 3_000_000)\nwhile True:\n    print("spam " * 20_000)')])
+make("hostile_prints.ipynb", ALL,
+     extra=[("part1_check", 'print("x" * 3_000_000)\nwhile True:\n    print("spam " * 20_000)')])
 make("hostile_memory.ipynb", ALL, extra=[("part1_check",
-     "hog = []\nwhile True:\n    hog.append(bytearray(100_000_000))"), ("part2_check", "import numpy as np\nbig = np.ones((100_000, 100_000))")])
+     "hog = []\nwhile True:\n    hog.append(bytearray(100_000_000))"),
+    ("part2_check", "import numpy as np\nbig = np.ones((100_000, 100_000))")])
 make("hostile_kills_kernel.ipynb", ALL, extra=[("part1_check", "import os\nos._exit(3)")])
-make("hostile_kills_grader.ipynb", ALL, extra=[("part2_check", "import os, signal\nos.kill(os.getppid(), signal.SIGKILL)")])
+make("hostile_kills_grader.ipynb", ALL,
+     extra=[("part2_check", "import os, signal\nos.kill(os.getppid(), signal.SIGKILL)")])
 text = (OUT / "mistake_part1.ipynb").read_text()
 make("hostile_invalid_json.ipynb", raw=text[: len(text) // 2])
 make("hostile_not_a_notebook.ipynb", raw=json.dumps({"student": "me", "answers": "in my head"}))
@@ -112,7 +116,8 @@ import json
 json.dumps = lambda *a, **k: '{"n_links": 7, "T1": "perfect"}'
 list, dict, float, int, str, isinstance = None, None, None, None, None, None
 print("PUMA 560 assignment: 10/10 points")'''
-make("hostile_monkeypatch.ipynb", {**ALL, "part2_answers": "", "part3_answers": P3_BAD}, extra=[("part3_check", MONKEY)])
+make("hostile_monkeypatch.ipynb", {**ALL, "part2_answers": "", "part3_answers": P3_BAD},
+     extra=[("part3_check", MONKEY)])
 WEIRD = '''class Liar:
     def __eq__(self, other):
         return True
@@ -130,11 +135,12 @@ T4 = float("nan")
 def endless():
     while True:
         yield 1
-chain = endless()'''
+chain = endless()'''  # noqa: E501  (a student's cell, as the committed hostile_weird_values.ipynb has it)
 make("hostile_weird_values.ipynb", {"part1_answers": WEIRD, "part2_answers": WEIRD2, "part3_answers": WEIRD3})
 
 # --- one slip, one item: a mistake that leaves a valid frame costs only its row -------------
-make("slip_alpha1.ipynb", {**ALL, "part3_answers": P3.replace("T1 = Tz(q1, 0) @ Tx(90, 0)", "T1 = Tz(q1, 0) @ Tx(-90, 0)")})
+make("slip_alpha1.ipynb",
+     {**ALL, "part3_answers": P3.replace("T1 = Tz(q1, 0) @ Tx(90, 0)", "T1 = Tz(q1, 0) @ Tx(-90, 0)")})
 make("slip_alpha3.ipynb", {**ALL, "part3_answers": P3.replace("Tx(-90, 0.0203)", "Tx(90, 0.0203)")})
 # the alternative assignment (x4 backwards), with the +180° of θ4 forgotten
 make("slip_theta4_offset.ipynb", {"part1_answers": P1, "part2_answers": ALT_P2,
