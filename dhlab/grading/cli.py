@@ -287,8 +287,8 @@ def _parse_and_grade(argv, interrupts) -> int:
                         help=_("the folder 'dhlab-assign release' wrote (its _teacher/ holds the roster's variants)"))
     # not installed with dhlab (students install it too): the self-check grades it before anyone
     parser.add_argument("--source", type=Path, default=None,
-                        help="the teacher's solution notebook, graded first as a self-check (default: "
-                             "tools/teacher/08_puma_assignment.ipynb of the course's repository, when run from it)")
+                        help=_("the teacher's solution notebook, graded first as a self-check (default: "
+                               "tools/teacher/08_puma_assignment.ipynb of the course's repository, when run from it)"))
     parser.add_argument("--fallback", choices=("roster", "none"), default=None,
                         help=_("a missing, tampered or classmate's variant: grade against the roster's variant for "
                                "the student (roster, the default with --release) or give no marks (none)"))

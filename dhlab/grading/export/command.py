@@ -37,9 +37,9 @@ def _parser() -> argparse.ArgumentParser:
     gs.add_argument("--memory-mb", type=float, default=2048)
     gs.add_argument("--isolation", choices=("auto", "user", "none"), default="auto")
     gs.add_argument("--source", type=Path, default=None,
-                    help="the teacher's solution notebook, which the autograder grades first as a self-check "
-                         "(default: tools/teacher/08_puma_assignment.ipynb of the course's repository, "
-                         "when run from it)")
+                    help=_("the teacher's solution notebook, which the autograder grades first as a self-check "
+                           "(default: tools/teacher/08_puma_assignment.ipynb of the course's repository, "
+                           "when run from it)"))
     tr = sub.add_parser("try-gradescope", help=_("run an autograder.zip here, as Gradescope would"))
     tr.add_argument("zip", type=Path)
     tr.add_argument("notebook", type=Path)

@@ -56,6 +56,7 @@ import sys
 from pathlib import Path
 
 from ...errors import DHLabError
+from ...i18n import N_, _
 
 __all__ = ["CODE_STUB", "TEXT_STUB", "GenerateError", "SourceMissing", "clear_solutions", "remove_hidden_tests",
            "check_metadata", "student_cell", "student_notebook", "generate", "main",
@@ -78,7 +79,7 @@ TEMPLATE = Path(__file__).resolve().parents[1] / "template" / NOTEBOOK     # dhl
 # and where the student notebook made from it goes (the course's notebook, the package's copy)
 CHECKOUT_SOURCE = Path("tools") / "teacher" / NOTEBOOK
 CHECKOUT_STUDENTS = (Path("notebooks") / NOTEBOOK, Path("dhlab") / "grading" / "template" / NOTEBOOK)
-WHERE_TO_GET = ("The teacher's source notebook (the assignment with its solutions) is not installed with dhlab, "
+WHERE_TO_GET = N_("The teacher's source notebook (the assignment with its solutions) is not installed with dhlab, "
                 "so that students never get it: it is {path} in the course's repository. Run this from a clone "
                 "of the repository (git clone the course, then run from its folder), or give its path "
                 "(dhlab-grade … --source PATH; python -m dhlab.grading.release.generate PATH -o STUDENT.ipynb): a "
@@ -105,11 +106,12 @@ def find_source(path=None) -> Path:
     repository); :class:`SourceMissing`, saying where to get it, when there is none."""
     if path is not None:
         if not Path(path).is_file():
-            raise SourceMissing(f"no notebook at {str(path)!r}. " + WHERE_TO_GET.format(path=CHECKOUT_SOURCE))
+            raise SourceMissing(_("no notebook at {path!r}.").format(path=str(path)) + " "
+                                + _(WHERE_TO_GET).format(path=CHECKOUT_SOURCE))
         return Path(path)
     top = checkout()
     if top is None:
-        raise SourceMissing(WHERE_TO_GET.format(path=CHECKOUT_SOURCE))
+        raise SourceMissing(_(WHERE_TO_GET).format(path=CHECKOUT_SOURCE))
     return top / CHECKOUT_SOURCE
 
 
@@ -253,7 +255,7 @@ def main(argv=None) -> int:
     top = checkout() if args.source is None else None
     if args.output is None and top is None:
         if args.source is None:
-            print(f"generate: {WHERE_TO_GET.format(path=CHECKOUT_SOURCE)}", file=sys.stderr)
+            print(f"generate: {_(WHERE_TO_GET).format(path=CHECKOUT_SOURCE)}", file=sys.stderr)
             return 2
         parser.error("give -o STUDENT.ipynb for a source other than the course's")
     source = args.source or top / CHECKOUT_SOURCE

@@ -26,6 +26,8 @@ import tempfile
 from pathlib import Path
 from types import SimpleNamespace
 
+from ...i18n import _
+
 __all__ = ["SelfCheckError", "check", "solution"]
 
 LARGER_MB = 2048                     # tried when the teacher's memory limit fails (unless theirs is larger)
@@ -63,8 +65,8 @@ def solution(options) -> Path:
     try:
         return find_source(getattr(options, "source", None))
     except SourceMissing as e:
-        raise SelfCheckError(f"The grader's self-check needs the teacher's solution, so nothing was graded. {e}") \
-            from None
+        raise SelfCheckError(_("The grader's self-check needs the teacher's solution, so nothing was graded.")
+                             + f" {e}") from None
 
 
 def _grade_solution(iso, options, memory_mb) -> tuple:
