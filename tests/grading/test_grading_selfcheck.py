@@ -137,9 +137,11 @@ def test_clean_removes_what_a_killed_grader_left_and_ends_its_processes(package,
     proc = _grader(["puma", str(subs), "-o", str(tmp_open / "gradebook.csv"), "-q", "--timeout", "300"], package, env)
     try:
         deadline = time.monotonic() + 180
-        while not _running(str(tmp), "00000.ipynb") and time.monotonic() < deadline:
-            time.sleep(0.5)                                 # until the submission's runner runs
-        time.sleep(3)                                       # and its kernel hangs in the endless cell
+        # until the submission's kernel runs (a process of its folder besides the runner): the runner dies
+        # with its grader, the kernel is what a killed grader leaves behind (a fixed wait raced a slow start)
+        while not set(_running(str(tmp))) - set(_running(str(tmp), "00000.ipynb")) and time.monotonic() < deadline:
+            time.sleep(0.5)
+        time.sleep(3)                                       # and hangs in the endless cell
         assert proc.poll() is None, proc.communicate()[1][-2000:]
         proc.send_signal(signal.SIGKILL)                    # the grader, killed: it cannot tidy up
         proc.communicate(timeout=30)
