@@ -267,9 +267,12 @@ def test_the_counted_frames_reach_the_screen(browser, lab_server, lab_root, resu
     """The page-side counter (screenrate.py: drawing calls, per animation frame) counts pictures
     that reach the screen: during a slider drag and a rotation of the canvas backend (whose
     low-latency canvas hands its pictures to the compositor outside the page's own frames), a
-    screencast of the page sees as many frames in which the figure changed, within 15 % (seen:
-    0-11 %, the screencast seeing a few more in a drag). The screencast encodes every frame, so
-    the rates themselves are lower here than in test_screen_rate: only the agreement is asserted."""
+    screencast of the page sees as many frames in which the figure changed. The claim has a
+    direction: the page must not count pictures that never reach the screen (counted at most 15 %
+    above the screencast: seen 0 %), and it must not miss many (the screencast at most 25 % above
+    the count: seen 0-15 %, a loaded CI machine seeing most, as the screencast also catches the
+    compositor's half-way pictures during a drag). The screencast encodes every frame, so the rates
+    themselves are lower here than in test_screen_rate: only the agreement is asserted."""
     skip_unless_available("canvas")
     page = labdriver.open_lab(browser, lab_server, 1400, 1000, ratio)
     counts = {}
@@ -298,7 +301,8 @@ def test_the_counted_frames_reach_the_screen(browser, lab_server, lab_root, resu
     print(f"\npixel ratio {ratio}: frames counted in the page vs seen by the screencast: {counts}")
     for name, c in counts.items():
         assert c["counted"] > 20, (name, c)
-        assert abs(c["counted"] - c["screencast"]) <= max(3, 0.15 * c["counted"]), (name, c)
+        assert c["counted"] - c["screencast"] <= max(3, 0.15 * c["counted"]), ("counted, not shown", name, c)
+        assert c["screencast"] - c["counted"] <= max(3, 0.25 * c["counted"]), ("shown, not counted", name, c)
 
 
 def test_print_table(results_dir):
