@@ -96,12 +96,15 @@ bench: $(READY)
 
 # Re-execute every notebook in place (finite timeout), so stored outputs match the code (the
 # Spanish ones are rebuilt from the English and their catalogs, and executed);
-# the student version of the PUMA assignment is generated from its source (the teacher's
-# solutions, tools/teacher/: out of notebooks/ and out of the package), not executed: written as
+# the PUMA assignment's solutions are in no file (students clone this repository): its solved
+# notebook is computed from the student notebook (dhlab.assignment.solution) into a temporary
+# folder, executed there, and the student notebook made from it again, written as
 # notebooks/08_puma_assignment.ipynb and as the package's copy dhlab-assign starts from.
 notebooks: $(READY)
-	$(BIN)/python -m tools.execute $(filter-out notebooks/08_puma_assignment.ipynb notebooks/index.ipynb,$(wildcard notebooks/*.ipynb)) tools/teacher/08_puma_assignment.ipynb
-	$(BIN)/python -m dhlab.grading.release.generate
+	$(BIN)/python -m tools.execute $(filter-out notebooks/08_puma_assignment.ipynb notebooks/index.ipynb,$(wildcard notebooks/*.ipynb))
+	solved=$$(mktemp -d) && nb=$$solved/08_puma_assignment.ipynb \
+	  && $(BIN)/python -m dhlab.grading.release.generate --solved $$nb && $(BIN)/python -m tools.execute $$nb \
+	  && $(BIN)/python -m dhlab.grading.release.generate $$nb; status=$$?; rm -rf $$solved; exit $$status
 	$(BIN)/python -m tools.edition build
 
 # (never my-notebooks/: the student's answers)

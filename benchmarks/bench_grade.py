@@ -44,9 +44,11 @@ import tempfile
 import time
 from pathlib import Path
 
+from dhlab.grading.release.generate import find_source
+
 ROOT = Path(__file__).resolve().parents[1]
 KINDS = {                       # notebook -> the score it must get
-    ROOT / "tools" / "teacher" / "08_puma_assignment.ipynb": 10.0,
+    find_source(): 10.0,        # the teacher's solution, computed (no file holds it)
     ROOT / "tests" / "data" / "submissions" / "valid_alternative.ipynb": 10.0,
     ROOT / "tests" / "data" / "submissions" / "mistake_part1.ipynb": 9.5,
     ROOT / "tests" / "data" / "submissions" / "mistake_part2.ipynb": 9.14,
@@ -73,9 +75,9 @@ def make_variant_class(folder: Path, n: int) -> tuple:
     returns (extra grader arguments, expected score or (status, max score) per submission)."""
     import numpy as np
     sys.path.insert(0, str(ROOT / "tests"))
-    from support.solved_notebooks import released_robot, solved
     from dhlab.assignment.model import random_valid_frames
     from dhlab.grading.release import notebooks as R
+    from support.solved_notebooks import released_robot, solved
     secret = folder.parent / "secret.key"
     secret.write_bytes(b"benchmark-secret-0123456789abcdef\n")
     ids = [f"student_{i + 1:02d}" for i in range(n)]

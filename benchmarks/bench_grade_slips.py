@@ -68,11 +68,17 @@ def _count_named(counts: dict, slipped: int, report) -> None:
 
 
 def sweep(per_family: int, pairs: int, seed: int) -> dict:
-    from support.written_answers import (links_not_in_their_frames, lost as lost_items, moves_like,
-                                         namespace_from_rows, report, rows_in_degrees)
     from dhlab.assignment import variants as V
     from dhlab.assignment.family import family_names
     from dhlab.assignment.model import random_valid_frames
+    from support.written_answers import (
+        links_not_in_their_frames,
+        moves_like,
+        namespace_from_rows,
+        report,
+        rows_in_degrees,
+    )
+    from support.written_answers import lost as lost_items
     rng = np.random.default_rng(seed)
     out = {}
     for key in family_names():

@@ -48,15 +48,24 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+
 import dhlab  # noqa: E402
-from dhlab.views.teach import teach  # noqa: E402
 from dhlab.views import framing  # noqa: E402
 from dhlab.views.labels import group_points, merged_name  # noqa: E402
-from dhlab.views.view import (AXIS_COLORS, EE_COLOR, JOINT_AXIS_COLOR, LINK_COLOR, TRIAD_FRACTION,  # noqa: E402
-                              line_in_box, triad_segments, typical_size)
 from dhlab.views.mechanism import Mechanism  # noqa: E402
+from dhlab.views.teach import teach  # noqa: E402
 from dhlab.views.triads import letter_points  # noqa: E402
-from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+from dhlab.views.view import (  # noqa: E402
+    AXIS_COLORS,
+    EE_COLOR,
+    JOINT_AXIS_COLOR,
+    LINK_COLOR,
+    TRIAD_FRACTION,
+    line_in_box,
+    triad_segments,
+    typical_size,
+)
 
 FIGSIZE, DPI = (5.6, 5.6), 100       # the teach panel's default size
 

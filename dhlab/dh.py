@@ -30,8 +30,17 @@ from .i18n import N_, _
 from .lazy_sympy import is_sympy
 from .table import DHTable
 from .transforms import Rx, Rz
-from .validation import (Angle, DHLabError, as_angle, as_choice, as_length, as_number, as_sequence, describe,
-                         has_angle_mark)
+from .validation import (
+    Angle,
+    DHLabError,
+    as_angle,
+    as_choice,
+    as_length,
+    as_number,
+    as_sequence,
+    describe,
+    has_angle_mark,
+)
 
 __all__ = ["RevoluteDH", "PrismaticDH", "DHRobot"]
 
@@ -131,7 +140,7 @@ class DHRobot(Robot):
     def _sym_blocks(self):
         """Link matrices, with each run of revolute joints about parallel axes
         (α = 0 between them) written as one block in the sums of their angles."""
-        from .symbolic import exact_angle          # (sympy: imported on first symbolic use)
+        from .symbolic import exact_angle  # (sympy: imported on first symbolic use)
         matrices = self.link_matrices_sym()          # once: each call builds all n
         blocks, i = [], 0
         while i < self.n:
@@ -179,7 +188,7 @@ class DHRobot(Robot):
 def links_from_table(rows, params, angles, qlim, revolute, prismatic) -> tuple:
     """The links of a table typed as on the slides (see :meth:`DHRobot.from_table`), made by
     the link classes ``revolute`` and ``prismatic``: (links, joint symbols, params)."""
-    import sympy as sp          # a typed table is read as sympy expressions
+    import sympy as sp  # a typed table is read as sympy expressions
     angles = as_choice(angles, ("deg", "rad"), "angles")
     params = numeric_params(params)
     rows = table_rows(rows)
@@ -281,7 +290,7 @@ _TEXT = re.compile(r"[\w\s+\-*/().]*")
 
 def parse_entry(value, where: str, degrees: bool = False, length: bool = False):
     """A table entry as a sympy number or expression, checked (finite, real)."""
-    import sympy as sp          # a typed table is read as sympy expressions
+    import sympy as sp  # a typed table is read as sympy expressions
     if degrees and has_angle_mark(value):
         raise DHLabError(_("{where} = {value!r} is already in radians (made by deg2rad()), but this table's "
                            "angles are degrees: write the plain number of degrees (e.g. 90), or pass "

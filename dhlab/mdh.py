@@ -43,8 +43,16 @@ only the base, the joint axes and the end effector are the same.
 from __future__ import annotations
 
 from .chain import Robot, link_list
-from .dh import (DHParameters, DHRobot, PrismaticDH, RevoluteDH, links_from_table, parse_entry, refuse_convention,
-                 table_rows)
+from .dh import (
+    DHParameters,
+    DHRobot,
+    PrismaticDH,
+    RevoluteDH,
+    links_from_table,
+    parse_entry,
+    refuse_convention,
+    table_rows,
+)
 from .i18n import N_, _
 from .lazy_sympy import has_symbols, is_matrix
 from .table import DHTable
@@ -66,7 +74,7 @@ def mdh_matrix(theta, d, a, alpha):
     """
     factors = [Rx(alpha), trans(a, 0, 0), Rz(theta), trans(0, 0, d)]   # each checks its value
     if any(is_matrix(M) for M in factors):
-        import sympy as sp      # (loaded already: a factor is a sympy Matrix)
+        import sympy as sp  # (loaded already: a factor is a sympy Matrix)
         return sp.Matrix(factors[0]) * sp.Matrix(factors[1]) * sp.Matrix(factors[2]) * sp.Matrix(factors[3])
     return factors[0] @ factors[1] @ factors[2] @ factors[3]
 

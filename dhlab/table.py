@@ -26,7 +26,7 @@ def _number(v: float) -> str:
 def format_angle(value) -> str:
     """An angle (radians, number or sympy) as degrees: pi/2 -> '90°'."""
     if has_symbols(value):
-        import sympy as sp      # (loaded already: the value is a sympy formula)
+        import sympy as sp  # (loaded already: the value is a sympy formula)
         return str(sp.nsimplify(value * 180 / sp.pi)) + "°"
     return _number(math.degrees(float(value))) + "°"
 

@@ -32,8 +32,16 @@ import numpy as np
 
 from .i18n import _
 from .lazy_sympy import is_matrix, is_sympy
-from .validation import (DHLabError, as_angle, as_length, as_matrix4, as_sym_matrix4,
-                         as_text, as_tolerance, rigid_problem)
+from .validation import (
+    DHLabError,
+    as_angle,
+    as_length,
+    as_matrix4,
+    as_sym_matrix4,
+    as_text,
+    as_tolerance,
+    rigid_problem,
+)
 
 __all__ = [
     "Rx", "Ry", "Rz", "trans", "Tr", "Tz", "Tx", "dh_matrix",
@@ -60,7 +68,7 @@ def _rotation(axis: int, angle, name: str = "angle"):
     """4x4 rotation about the x (0), y (1) or z (2) axis."""
     angle = _angle(angle, name)
     if _symbolic(angle):
-        import sympy as sp      # (loaded already: the angle is a sympy value)
+        import sympy as sp  # (loaded already: the angle is a sympy value)
         c, s, M = sp.cos(angle), sp.sin(angle), sp.eye(4)
     else:
         c, s, M = math.cos(angle), math.sin(angle), np.eye(4)
@@ -89,7 +97,7 @@ def trans(x=0, y=0, z=0):
     """Pure translation by (x, y, z)."""
     x, y, z = (_length(v, n) for v, n in ((x, "x"), (y, "y"), (z, "z")))
     if _symbolic(x, y, z):
-        import sympy as sp      # (loaded already: a length is a sympy value)
+        import sympy as sp  # (loaded already: a length is a sympy value)
         M = sp.eye(4)
         M[0, 3], M[1, 3], M[2, 3] = x, y, z
         return M
@@ -172,7 +180,7 @@ def inv(T):
     True
     """
     if is_matrix(T):
-        import sympy as sp      # (loaded already: T is a sympy Matrix)
+        import sympy as sp  # (loaded already: T is a sympy Matrix)
         T = as_sym_matrix4(T, "T")
         if not T.free_symbols:
             check_rigid(T, "T")            # a numeric sympy matrix must be rigid, as a numpy one

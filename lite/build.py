@@ -188,8 +188,8 @@ def pypi_wheels() -> list[Path]:
 
 
 def dhlab_wheel() -> Path:
-    """dhlab's wheel, built from this checkout (as every wheel of dhlab, without the assignment's
-    solutions: they stay in the repository, tools/teacher/, so a public site cannot serve them)."""
+    """dhlab's wheel, built from this checkout (no file of the course holds the assignment's
+    solutions: dhlab-assign solutions computes them for a teacher)."""
     folder = CACHE / "dist"
     shutil.rmtree(folder, ignore_errors=True)
     run(sys.executable, "-m", "pip", "wheel", "--quiet", "--no-deps", "-w", folder, ROOT)

@@ -10,9 +10,11 @@
   notebook (``tools/locale/es/notebooks/<stem>.po``), the course home ``notebooks/index.ipynb``;
 * :mod:`tools.i18n_catalog`: ``dhlab/locale/`` (the package's own messages, which it ships);
 * :mod:`tools.execute`: stored outputs exactly what the code computes;
-* :mod:`tools.student_copy`: ``my-notebooks/``, where a student works (``make lab``);
-* ``tools/teacher/08_puma_assignment.ipynb``: the assignment with its solutions (the teacher's source
-  notebook; ``python -m dhlab.grading.release.generate`` makes the student notebook from it).
+* :mod:`tools.student_copy`: ``my-notebooks/``, where a student works (``make lab``).
+
+No file here (nor anywhere in the repository, which students clone) holds the assignment's solutions:
+``dhlab-assign solutions OUT.ipynb`` computes them (:mod:`dhlab.assignment.solution`); ``make notebooks``
+computes the solved notebook into a temporary folder, executes it, and makes the student notebook from it.
 
 They reach into the repository (``notebooks/``, ``tools/locale/``) on purpose: that is where they work.
 The package ``dhlab`` never imports them.

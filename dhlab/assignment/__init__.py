@@ -26,6 +26,7 @@ in notebooks released before this package existed, from ``dhlab.course.assignmen
 - :mod:`~dhlab.assignment.variants` — a personal variant of a family robot, signed for one student
 - :mod:`~dhlab.assignment.notebook_cells` — the seam (``use_variant``: the student's robot becomes the
   notebook's) and the "Your robot" section written into each student's notebook
+- :mod:`~dhlab.assignment.solution` — the teacher's solved notebook, computed from the robot (never stored)
 
 **The fair checks** — one code path for the notebook and the grader:
 

@@ -42,7 +42,7 @@ from ..i18n import _
 from ..lines import Line
 from ..lines import relation as line_relation
 from .family import spec as family_spec
-from .reference import row_matrix, dh_program
+from .reference import dh_program, row_matrix
 
 __all__ = ["AssignmentRobot", "build", "physical_frames", "rows_from_frames",
            "random_valid_frames", "GRIPPER"]
@@ -159,7 +159,7 @@ class AssignmentRobot:
         """The reference solution as a :class:`dhlab.DHRobot` (``dh_from_axes`` on the axes;
         its q is the student's q, its base puts its frame 0 on joint 1's drawn axis)."""
         if self._robot is None:
-            from ..dh_frames import dh_from_axes        # (sympy: only when a notebook asks for the robot)
+            from ..dh_frames import dh_from_axes  # (sympy: only when a notebook asks for the robot)
             axes = [(ax.point, ax.direction, kind) for ax, kind in zip(self.axes, self.kinds)]
             qlim = [(lo, hi) if kind == "P" else (max(lo, -2 * math.pi), min(hi, 2 * math.pi))
                     for (lo, hi), kind in zip(self.qlim, self.kinds)]

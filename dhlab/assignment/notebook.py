@@ -19,12 +19,12 @@ The transformations are written as in the seed (angles in **degrees**, lengths i
 metres), with the joint variables q1…q6:
 
 >>> q1, q2, q3, q4, q5, q6 = joint_variables(6)
->>> T3 = Tz(q3, 0.15005) @ Tx(-90, 0.0203)
+>>> T3 = Tz(q3, 0.2) @ Tx(-90, 0.05)
 >>> T3
-Tz[q3, 0.15005]·Tx[-90°, 0.0203]
+Tz[q3, 0.2]·Tx[-90°, 0.05]
 >>> T3.matrix(0).round(5)[:3, 3].tolist()        # numeric at q3 = 0 (radians)
-[0.0203, 0.0, 0.15005]
->>> T4 = Tz(q4, 0.4318) @ Tx(90, 0)
+[0.05, 0.0, 0.2]
+>>> T4 = Tz(q4, 0.3) @ Tx(90, 0)
 >>> chain = T3 @ T4
 >>> len(chain)
 2

@@ -114,7 +114,7 @@ def teach(namespace, **options):
     """A teach panel (sliders in degrees, or metres for a sliding joint) for your robot: your
     links assembled by your transformations, with your DH frames (x red, y green, z blue).
     Not scored. Before part 3 is answered: a :class:`~dhlab.assignment.pictures.Note` saying so."""
-    from ..views.teach import teach as teach_panel      # ipywidgets: only when a panel is asked for
+    from ..views.teach import teach as teach_panel  # ipywidgets: only when a panel is asked for
 
     ref = current_robot()
     try:

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import model
-from .reference import TOL_DEG, TOL_POS, Reference, cache_of, row_matrix, reference, relation
+from .reference import TOL_DEG, TOL_POS, Reference, cache_of, reference, relation, row_matrix
 
 __all__ = ["FrameFamily", "frame_family", "nearest_valid_frame", "valid_frames_near", "is_valid_frame",
            "fit_link", "rotation_angle", "random_valid_frames", "dh_rows_from_frames"]

@@ -62,8 +62,18 @@ from ..kinematics import elementary
 from ..transforms import inv
 from ..validation import DHLabError, check_joint_values
 from .frames import Placer
-from .reading import (CASE1_RULES, PARALLEL_RULES, PRISMATIC_RULES, read_axes, read_choice, read_qlim,
-                      read_tol, read_tool, robot_size, short_repr)
+from .reading import (
+    CASE1_RULES,
+    PARALLEL_RULES,
+    PRISMATIC_RULES,
+    read_axes,
+    read_choice,
+    read_qlim,
+    read_tol,
+    read_tool,
+    robot_size,
+    short_repr,
+)
 from .report import DHAssignment, FrameStep
 from .rows import check_rebuilt, dh_row, finish_steps, make_link, without_noise
 

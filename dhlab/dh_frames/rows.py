@@ -46,7 +46,7 @@ def _snap_angle(value: float, angle_tol: float):
     whole = round(degrees)
     if abs(degrees - whole) <= max(math.degrees(angle_tol), 1e-9):
         whole = 180 if whole == -180 else whole
-        from ..symbolic import exact_angle      # (sympy: imported when the first frames are placed)
+        from ..symbolic import exact_angle  # (sympy: imported when the first frames are placed)
         return exact_angle(math.radians(whole)) if whole else 0
     return value
 

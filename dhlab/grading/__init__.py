@@ -19,10 +19,13 @@ This package runs them on a whole class, in four sub-packages:
   and the summary (:mod:`~dhlab.grading.book.progress`);
 * :mod:`dhlab.grading.release` — ``dhlab-assign release``: a personal robot for every student, signed with
   the teacher's secret (:mod:`~dhlab.grading.release.notebooks`, :mod:`~dhlab.grading.release.roster`), in the
-  student's language (:mod:`~dhlab.grading.release.language`), from the student notebook
-  :mod:`~dhlab.grading.release.generate` makes out of the teacher's source (with the solutions: not in the
-  package, but ``tools/teacher/08_puma_assignment.ipynb`` of the course's repository, or ``--source``); the
-  student notebook and its Spanish text are package data (``dhlab/grading/template/``);
+  student's language (:mod:`~dhlab.grading.release.language`), from the student notebook, package data
+  (``dhlab/grading/template/``, with its Spanish text; :mod:`~dhlab.grading.release.generate` keeps it the
+  course's). The teacher's solutions are in no file: ``dhlab-assign solutions`` computes them, for the PUMA
+  560 or one student's robot (:mod:`~dhlab.grading.release.solutions`, from
+  :mod:`dhlab.assignment.solution`), and so does the grader's self-check (or it reads ``--source``);
+* :mod:`dhlab.grading.options` — the options the teacher's commands share (``--language``,
+  ``--secret-file``, ``--source``), defined once;
 * :mod:`dhlab.grading.export` — where teachers already grade (``dhlab-grade export``): the Gradescope
   autograder (:mod:`~dhlab.grading.export.gradescope`) and the CSV files Canvas and Moodle import
   (:mod:`~dhlab.grading.export.lms`).

@@ -11,7 +11,8 @@ Every ``*.ipynb`` under SUBMISSIONS_DIR (any depth, e.g. nbgrader's
 
 1. **Every submission is copied first**, without its outputs (:mod:`dhlab.grading.run.staging`),
    into a folder only the grader can enter; nothing runs before all are copied.
-2. **The grader checks itself** (:mod:`dhlab.grading.run.selfcheck`): the teacher's solution is
+2. **The grader checks itself** (:mod:`dhlab.grading.run.selfcheck`): the teacher's solution
+   (computed for the PUMA 560, :mod:`dhlab.assignment.solution`; or the teacher's own, ``--source``) is
    run exactly as the submissions' will be, under the same limits (``--memory-mb`` included),
    and must earn full marks; if it cannot, the grader stops with one message (which user
    cannot enter which folder, or which memory limit is too small and one that worked, what
@@ -74,6 +75,7 @@ import concurrent.futures
 import functools
 import os
 import shlex
+import shutil
 import signal
 import sys
 import tempfile
@@ -81,11 +83,31 @@ import threading
 import time
 from pathlib import Path
 
-from ..i18n import _
-from .run.launch import Stopped, allow_runs, run_submission, stop_all
+# the whole grader is imported before any student code runs (the self-check, the assignment's checks
+# included): what a submission does to sys.modules cannot change the code that grades it
+from ..assignment import checks  # noqa: F401
+from ..i18n import _, as_teacher
+from ..validation import DHLabError
+from .book import grade_variants as GV
+from .book.gradebook import (
+    COLUMNS,
+    REMOVED,
+    VARIANT_COLUMNS,
+    assignment_cells,
+    grade_again,
+    read_csv,
+    write_atomic,
+    write_csv,
+)
 from .book.progress import Progress, summary
 from .book.submission_row import error_row, grade_submission
-from .run.staging import find_submissions
+from .export.command import main as export
+from .options import shared
+from .run import cleanup, selfcheck
+from .run.cleanup import main as clean
+from .run.isolation import changed_files, file_digests, setup
+from .run.launch import Stopped, allow_runs, run_submission, stop_all
+from .run.staging import find_submissions, stage_all
 
 __all__ = ["main", "grade_submission", "find_submissions", "run_submission"]
 
@@ -110,7 +132,6 @@ class _Batch:
         self.written = False                        # the gradebook rewritten by this run yet
 
     def package_unchanged(self) -> bool:
-        from .run.isolation import changed_files
         with self.lock:
             if self.stop.is_set():
                 return False
@@ -133,7 +154,6 @@ class _Batch:
             return False
 
     def add(self, row, started, ended) -> None:
-        from .book.gradebook import write_atomic
         with self.lock:
             text = row.pop("_feedback_text")
             row.pop("_part_text", None)
@@ -157,7 +177,6 @@ class _Batch:
                                                                         why=exc.strerror or exc)
 
     def _write(self) -> None:
-        from .book.gradebook import write_csv
         write_csv(self.options.output, self.rows.values(), self.options.columns)
         self.written = True
 
@@ -234,10 +253,8 @@ def _grade_one(batch, staged, iso):
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     if argv[:1] == ["--clean"]:                   # what a killed grader left behind (cleanup.py)
-        from .run.cleanup import main as clean
         return clean()
     if argv[:1] == ["export"]:                    # Gradescope's autograder.zip, LMS gradebooks
-        from .export.command import main as export
         return export(argv[1:])
     return grade(argv)
 
@@ -246,7 +263,6 @@ def grade(argv) -> int:
     """``dhlab-grade puma SUBMISSIONS -o gradebook.csv …`` (see the module), in the teacher's language
     (``--language``, else ``DHLAB_LANGUAGE``, else English): its help, messages, statuses and summary;
     each feedback file is in its student's language (:mod:`dhlab.grading.book.submission_row`)."""
-    from ..i18n import as_teacher
     return as_teacher("dhlab-grade", argv, _grade)
 
 
@@ -261,7 +277,13 @@ def _grade(argv) -> int:
 
 
 def _parse_and_grade(argv, interrupts) -> int:
-    parser = argparse.ArgumentParser(prog="dhlab-grade", description=__doc__.splitlines()[0],
+    shared_options = shared(
+        secret=_("personal variants: the teacher's secret the notebooks were released with; each "
+                 "submission is graded against its student's own robot (without it: the PUMA 560)"),
+        source=True,
+        language=_("the teacher's language, en or es: this command's messages, the gradebook's statuses "
+                   "(default: DHLAB_LANGUAGE, else en); each feedback file is in its student's language"))
+    parser = argparse.ArgumentParser(prog="dhlab-grade", description=__doc__.splitlines()[0], parents=[shared_options],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("assignment", choices=ASSIGNMENTS, help=_("the assignment to grade (puma)"))
     parser.add_argument("submissions", type=Path, help=_("folder of submitted notebooks (*.ipynb, any depth)"))
@@ -280,21 +302,11 @@ def _parse_and_grade(argv, interrupts) -> int:
                         help=_("auto (default): a user per job when run as root, else none; user: refuse to "
                                "grade without it; none: kernels run as the grader's user"))
     parser.add_argument("-q", "--quiet", action="store_true", help=_("no progress bar"))
-    parser.add_argument("--secret-file", type=Path, default=None,
-                        help=_("personal variants: the teacher's secret the notebooks were released with; each "
-                               "submission is graded against its student's own robot (without it: the PUMA 560)"))
     parser.add_argument("--release", type=Path, default=None,
                         help=_("the folder 'dhlab-assign release' wrote (its _teacher/ holds the roster's variants)"))
-    # not installed with dhlab (students install it too): the self-check grades it before anyone
-    parser.add_argument("--source", type=Path, default=None,
-                        help=_("the teacher's solution notebook, graded first as a self-check (default: "
-                               "tools/teacher/08_puma_assignment.ipynb of the course's repository, when run from it)"))
     parser.add_argument("--fallback", choices=("roster", "none"), default=None,
                         help=_("a missing, tampered or classmate's variant: grade against the roster's variant for "
                                "the student (roster, the default with --release) or give no marks (none)"))
-    parser.add_argument("--language", default=None,
-                        help=_("the teacher's language, en or es: this command's messages, the gradebook's statuses "
-                               "(default: DHLAB_LANGUAGE, else en); each feedback file is in its student's language"))
     options = parser.parse_args(argv)
     if options.jobs < 1 or options.timeout <= 0 or options.memory_mb < 256:
         parser.error(_("-j must be ≥ 1, --timeout > 0 and --memory-mb ≥ 256"))
@@ -304,15 +316,12 @@ def _parse_and_grade(argv, interrupts) -> int:
                      "the notebooks were released with)")
     resolve = None
     if options.secret_file is not None:
-        from .book import grade_variants as GV
-        from ..validation import DHLabError
         try:
             variant_setup = GV.setup(options.secret_file, options.release, options.fallback)
         except DHLabError as exc:
             print(f"dhlab-grade: error: {exc}", file=sys.stderr)
             return 2
         resolve = functools.partial(GV.resolve, variant_setup)
-    from .book.gradebook import COLUMNS, VARIANT_COLUMNS
     options.columns = VARIANT_COLUMNS if resolve is not None else COLUMNS
     folder = options.submissions
     if not folder.is_dir():
@@ -347,13 +356,6 @@ def _cannot_write(output: Path) -> str:
 
 def _run_batch(argv, options, folder, paths, feedback_dir, resolve, interrupts) -> int:
     """Stage, check the grader, grade every submission, and say what happened (exit code)."""
-    from ..assignment import checks  # noqa: F401  (imported before any student code runs)
-    from .book import grade_variants  # noqa: F401
-    from .book.gradebook import assignment_cells, read_csv
-    from .run.isolation import file_digests, setup
-    from .run import cleanup
-    from .run import selfcheck
-    from .run.staging import stage_all
     held = cleanup.hold()                         # dhlab-grade --clean leaves this grader's folders alone  # noqa: F841
     checks.check_all(checks.Answers())            # build the reference before any student code runs
     assignment_cells()                            # and read the assignment's own cells
@@ -391,7 +393,6 @@ def _run_batch(argv, options, folder, paths, feedback_dir, resolve, interrupts) 
         if not interrupts.count and not batch.written:
             batch._write()                        # nothing new graded: the kept rows (and the removed ones)
     finally:
-        import shutil
         if copies is not None:
             shutil.rmtree(copies, ignore_errors=True)
         if iso is not None:
@@ -447,7 +448,6 @@ def _plan(old, staged, resume) -> tuple:
     whose file is gone from the folder is kept too, its status marked :data:`REMOVED` (its feedback
     file is still there; dropping it silently lost a grade). Without ``--resume`` every submission is
     graded again and the removed ones are only reported."""
-    from .book.gradebook import REMOVED, grade_again
     present = {s.submission for s in staged}
     removed = [r for r in old if r["submission"] not in present]
     if not resume:
@@ -464,7 +464,6 @@ def _plan(old, staged, resume) -> tuple:
 
 def _removed_text(removed, resume) -> str:
     """The summary's line on the submissions removed since the last run (none is dropped silently)."""
-    from .book.gradebook import REMOVED
     names = ", ".join(r["submission"] for r in removed[:20]) + (", …" if len(removed) > 20 else "")
     if resume:
         return _("Removed since the last run ({count}): {names}. Their rows are kept, their status starting "

@@ -57,8 +57,22 @@ from ..errors import DHLabError
 from .arrays import as_float_array, as_matrix4, as_sequence, as_sym_matrix4, as_vector, check_finite, rigid_problem
 from .joints import as_qlim, check_joint_values
 from .marks import Angle, AngleArray, has_angle_mark, is_angle
-from .values import (FULL_TURN, LARGEST_LENGTH, as_angle, as_choice, as_flag, as_index, as_length, as_number,
-                     as_text, as_timeout, as_tolerance, check_length_size, describe, real_number)
+from .values import (
+                     FULL_TURN,
+                     LARGEST_LENGTH,
+                     as_angle,
+                     as_choice,
+                     as_flag,
+                     as_index,
+                     as_length,
+                     as_number,
+                     as_text,
+                     as_timeout,
+                     as_tolerance,
+                     check_length_size,
+                     describe,
+                     real_number,
+)
 
 __all__ = [
     "DHLabError", "FULL_TURN", "LARGEST_LENGTH", "describe", "as_number", "as_angle", "as_length", "as_tolerance",

@@ -175,7 +175,7 @@ def as_matrix4(T, name: str = "T", batch: bool = False) -> np.ndarray:
 
 def as_sym_matrix4(T, name: str = "T") -> sp.Matrix:
     """A 4x4 sympy Matrix (numbers or expressions), every entry real and finite."""
-    import sympy as sp      # (a symbolic result: imported on first use, see dhlab.lazy_sympy)
+    import sympy as sp  # (a symbolic result: imported on first use, see dhlab.lazy_sympy)
     if not isinstance(T, sp.MatrixBase):
         return sp.Matrix(as_matrix4(T, name))
     if T.shape != (4, 4):

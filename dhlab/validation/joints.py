@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import DHLabError
 from ..i18n import _
-from .arrays import check_finite, as_float_array
+from .arrays import as_float_array, check_finite
 from .marks import Angle, AngleArray, has_angle_mark
 from .values import FULL_TURN, as_angle, as_number, check_length_size, describe
 

@@ -102,7 +102,7 @@ def real_number(x, name: str, symbolic: bool = False):
 
 
 def _sympy_real(x, name: str, symbolic: bool):
-    import sympy as sp      # (loaded already: x is a sympy object)
+    import sympy as sp  # (loaded already: x is a sympy object)
     if not isinstance(x, sp.Expr) or isinstance(x, sp.MatrixBase):
         raise DHLabError(_("{name} = {value} is not a number or an expression (a {type}).").format(
             name=name, value=describe(x), type=type(x).__name__))

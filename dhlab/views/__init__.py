@@ -2,6 +2,9 @@
 
 - :mod:`~dhlab.views.figures` — figures that are pictures: readable sizes, never clipped, the projector setting
 - :mod:`~dhlab.views.livefigure` — a figure redrawn in place (blitting), inline, ipympl or canvas
+- :mod:`~dhlab.views.backend` — which of the three backends a live figure uses (``choose_backend``)
+- :mod:`~dhlab.views.notebook_cell` — the cell a figure belongs to, and the front end that never answered
+- :mod:`~dhlab.views.ipympl_canvas` — ipympl's faster canvas, when ipympl draws
 - :mod:`~dhlab.views.canvas` — the canvas backend: the browser paints what moves (``receive`` takes its messages)
 - :mod:`~dhlab.views.png` — the fast PNG writer of every update
 - :mod:`~dhlab.views.poses` — a robot's pose in a view or a panel, and its units on a slider

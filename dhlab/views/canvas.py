@@ -19,7 +19,7 @@ frames a second. Here (an anywidget, its ES module ``canvas.js``):
   here, the axes take that view and matplotlib redraws;
 * a notebook page that cannot run ``canvas.js`` (anywidget's front end is not installed where
   JupyterLab runs) never says "loaded": after a few seconds the figure falls back to PNG
-  frames (the "image" backend) in the same place (:func:`dhlab.views.livefigure.watch_front_end`).
+  frames (the "image" backend) in the same place (:func:`dhlab.views.notebook_cell.watch_front_end`).
 
 An artist the browser cannot paint (see :class:`~dhlab.views.scene.Unsupported`) makes that
 figure send a full matplotlib frame at every step instead (the old cost, never a wrong

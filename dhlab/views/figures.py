@@ -182,7 +182,7 @@ class CourseFigure(Figure):
     def _texts_3d(self, renderer) -> list:
         """Where the labels of 3D axes are really drawn (inches): matplotlib's tight box
         misses some of them (an axis label of a turned 3D axes), so they are added."""
-        from .layout import drawn_texts          # (it brings mplot3d: only figures with 3D axes need it)
+        from .layout import drawn_texts  # (it brings mplot3d: only figures with 3D axes need it)
         axes3d = [ax for ax in self.axes if getattr(ax, "name", "") == "3d"]
         if not axes3d:
             return []

@@ -36,28 +36,24 @@ up figures, and ``plt.show()`` never shows it a second time.
 """
 from __future__ import annotations
 
-import asyncio
-import base64
-import functools
 import math
-import os
-import sys
 import time
 import weakref
 
-import matplotlib
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-from ..i18n import _
-from ..validation import DHLabError
+from .backend import BACKENDS, choose_backend, ipympl_active
 from .figures import new_figure
+from .ipympl_canvas import attach_ipympl_canvas
+from .notebook_cell import forget_previous_run, watch_front_end
 from .png import PNG_WITH_ALPHA, encode_png
 
+# choosing the backend (backend.py), ipympl's canvas (ipympl_canvas.py) and what the running cell
+# says (notebook_cell.py) have their own modules; their public names are here too, where the panels,
+# the tests and the notebooks have always imported them
 __all__ = ["LiveFigure", "ipympl_active", "forget_previous_run", "watch_front_end", "encode_png", "BACKENDS",
-           "choose_backend"]
-
-BACKENDS = ("auto", "canvas", "ipympl", "image")
+           "choose_backend", "MOTION_S", "REDRAW_EVERY_S"]
 
 # The canvas path's module (dhlab.views.canvas) is imported inside the methods that take that
 # path: it brings anywidget, which takes longer to import (~0.2 s) than this whole module.
@@ -73,57 +69,6 @@ MOTION_S = 0.3
 # 55 at pixel ratio 2, and a new background for the page) at most this often (seconds): a 2-s drag at
 # pixel ratio 2 kept its 46-49 frames/s at 1 s, and lost a tenth of them at 0.5 s (LiveFigure.may_redraw)
 REDRAW_EVERY_S = 1.0
-
-
-
-def ipympl_active() -> bool:
-    """True when ``%matplotlib widget`` (ipympl) is the current matplotlib backend."""
-    backend = str(matplotlib.rcParams._get_backend_or_none() or "").lower()
-    return backend in ("widget", "ipympl") or "ipympl" in backend
-
-
-def _in_kernel() -> bool:
-    """True in a Jupyter kernel (ipykernel, or the browser edition's Pyodide kernel), where a
-    front end can show widgets; False in a script, a test or a terminal IPython."""
-    try:
-        from IPython import get_ipython
-    except ImportError:
-        return False
-    shell = get_ipython()
-    if shell is None:
-        return False
-    return getattr(shell, "kernel", None) is not None or sys.platform == "emscripten"
-
-
-def _anywidget_imports() -> bool:
-    try:
-        import anywidget  # noqa: F401
-    except ImportError:
-        return False
-    return True
-
-
-def choose_backend(backend: str = "auto") -> str:
-    """The backend a LiveFigure uses: ``backend`` itself unless it is ``"auto"``; then the
-    environment variable ``DHLAB_BACKEND`` if set, else ipympl under ``%matplotlib widget``,
-    else "canvas" in a Jupyter kernel where anywidget imports (JupyterLab, Notebook 7, Voila,
-    the browser edition), else "image" (a script, a test: nothing shows a widget there)."""
-    if not isinstance(backend, str) or backend not in BACKENDS:
-        raise DHLabError(_("backend must be one of {names}, got {backend!r}.").format(
-            names=", ".join(map(repr, BACKENDS)), backend=backend))
-    if backend != "auto":
-        return backend
-    forced = os.environ.get("DHLAB_BACKEND", "").strip().lower()
-    if forced:
-        if forced not in BACKENDS[1:]:
-            raise DHLabError(_("the environment variable DHLAB_BACKEND must be 'canvas', 'ipympl' or 'image' "
-                               "(or unset), got {value!r}.").format(value=forced))
-        return forced
-    if ipympl_active():
-        return "ipympl"
-    if _in_kernel() and _anywidget_imports():
-        return "canvas"
-    return "image"
 
 
 class LiveFigure:
@@ -148,7 +93,7 @@ class LiveFigure:
         self._at_rest = {}           # what waits until the picture stops moving (when_at_rest)
         self.dragged = False         # this refresh follows another closely (see in_motion)
         if self.uses_ipympl:
-            _attach_ipympl_canvas(self.figure)
+            attach_ipympl_canvas(self.figure)
         else:
             FigureCanvasAgg(self.figure)
         self._moving = []
@@ -274,7 +219,7 @@ class LiveFigure:
         if self.backend == "canvas":
             return self._canvas_widget()
         if self._image is None:
-            import ipywidgets as widgets
+            import ipywidgets as widgets  # lazy: only the image path shows an ipywidgets.Image
             width, height = self.figure.canvas.get_width_height()
             self._image = widgets.Image(format="png", width=width, height=height)
             if self._background is None:
@@ -396,130 +341,3 @@ class LiveFigure:
             self._canvas.close()
             self._canvas = None
         self._background = None
-
-
-@functools.cache
-def _fast_canvas_class():
-    """ipympl's canvas class with a faster PNG packer (made on first use: importing
-    ipympl is only needed with ``%matplotlib widget``)."""
-    from ipympl.backend_nbagg import Canvas
-
-    class FastCanvas(Canvas):
-        """ipympl's canvas, with the changed pixels packed by :func:`encode_png`:
-        Pillow's PNG writer took 9-10 of the 15 ms of an update."""
-
-        def get_diff_image(self):
-            # matplotlib's webagg logic (backend_webagg_core), with a faster encoder
-            if not self._png_is_old:
-                return None
-            pixels = np.asarray(self.get_renderer().buffer_rgba())
-            buff = pixels.view(np.uint32).squeeze(2)        # one uint32 per pixel: fast compare
-            full = (self._force_full or buff.shape != self._last_buff.shape
-                    or (pixels[:, :, 3] != 255).any())
-            self.set_image_mode("full" if full else "diff")
-            output = buff if full else np.where(buff != self._last_buff, buff, 0)
-            self._last_buff = buff.copy()
-            self._force_full = self._png_is_old = False
-            return encode_png(output.view(np.uint8).reshape(*output.shape, 4), alpha=True)
-
-        def send_binary(self, data):
-            if self.syncing_data_url:
-                # Until a browser shows the canvas, ipympl keeps the picture in
-                # _data_url, but as bare base64: the browser then fails to draw it
-                # ("broken" image) and the canvas stays empty. Store a real data URL.
-                rgba = self._last_buff.view(np.uint8).reshape(*self._last_buff.shape, 4)
-                self._data_url = "data:image/png;base64," + base64.b64encode(
-                    encode_png(rgba, alpha=True)).decode("ascii")
-            self.send({"data": '{"type": "binary"}'}, buffers=[data])
-
-    return FastCanvas
-
-
-def _attach_ipympl_canvas(figure):
-    """Give ``figure`` an ipympl canvas without going through pyplot (so that
-    pyplot neither counts nor re-shows it)."""
-    from ipympl.backend_nbagg import FigureManager
-
-    canvas = _fast_canvas_class()(figure)
-    FigureManager(canvas, 0)          # ipympl's toolbar needs a manager
-    canvas.header_visible = False     # no "Figure 0" caption
-    canvas.resizable = False          # the panel's layout, not the user, sets the size
-    return canvas
-
-
-# --- a page that cannot run canvas.js -----------------------------------------------------
-FRONT_END_S = 4           # a notebook page that has not run canvas.js this long: PNG frames instead
-_WATCH_S = 1.0            # how often the kernel looks (between cells: it runs on the kernel's event loop)
-
-
-def watch_front_end(live) -> None:
-    """Fall back to PNG frames if the notebook page that ran this cell cannot run canvas.js.
-
-    A page with anywidget's front end runs ``initialize`` of canvas.js, which says "loaded", as
-    soon as it creates the widget (before showing it). A cell run from a notebook page (JupyterLab,
-    Notebook 7, the browser edition: its request names the cell) whose widget has not said so
-    after :data:`FRONT_END_S` gets ``live.fall_back_to_image()``. The kernel looks only between
-    cells, every :data:`_WATCH_S`, so a message queued behind a long cell is read first. Run by
-    nbval, a grader, Voila (no cell named) or outside a kernel's event loop: nothing is watched."""
-    try:
-        loop = asyncio.get_running_loop()
-    except RuntimeError:
-        return
-    if _current_cell() is None:
-        return
-    widget = live.canvas_widget
-
-    def check(looks: int) -> None:
-        if live.canvas_widget is not widget or widget.loaded:
-            return
-        if looks * _WATCH_S >= FRONT_END_S:
-            live.fall_back_to_image()
-        else:
-            loop.call_later(_WATCH_S, check, looks + 1)
-
-    loop.call_later(_WATCH_S, check, 1)
-
-
-# --- re-running a cell -------------------------------------------------------------
-# Each panel remembers the notebook cell that made it. When that cell runs
-# again, the panels of its previous run are closed, so their widgets (and the
-# figures they hold) do not pile up in the kernel.
-_made_by_cell: dict = {}
-
-
-def _current_cell():
-    """(cell id, execution count) of the running notebook cell, or None outside a notebook."""
-    try:
-        from IPython import get_ipython
-
-        shell = get_ipython()
-        kernel = getattr(shell, "kernel", None)
-        if kernel is None:
-            return None
-        parent = kernel.get_parent() if hasattr(kernel, "get_parent") else kernel._parent_header
-        cell_id = (parent or {}).get("metadata", {}).get("cellId")
-        return (cell_id, shell.execution_count) if cell_id else None
-    except Exception:                 # no IPython, or an unusual kernel: nothing to forget
-        return None
-
-
-def forget_previous_run(panel) -> None:
-    """Close what the current cell made the last time it ran, and remember ``panel``.
-
-    Outside a notebook (scripts, tests) this does nothing.
-    """
-    cell = _current_cell()
-    if cell is None:
-        return
-    cell_id, count = cell
-    kept = []
-    for made_count, ref in _made_by_cell.get(cell_id, []):
-        old = ref()
-        if old is None:
-            continue
-        if made_count != count:
-            old.close()
-        else:
-            kept.append((made_count, ref))
-    kept.append((count, weakref.ref(panel)))
-    _made_by_cell[cell_id] = kept

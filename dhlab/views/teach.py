@@ -14,8 +14,8 @@ backend (the figure is an image that is replaced on every move).
 """
 from __future__ import annotations
 
-import numpy as np
 import ipywidgets as widgets
+import numpy as np
 
 from ..i18n import _
 from ..transforms import rpy

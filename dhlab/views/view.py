@@ -34,12 +34,22 @@ from __future__ import annotations
 
 from ..validation import as_flag
 from .labels import FrameLabels, FrameLabels3D
+from .poses import default_q, one_pose
 from .triads import AXIS_COLORS, triad_segments
 from .view2d import RobotView2D
 from .view3d import RobotView3D
-from .poses import default_q, one_pose
-from .viewbase import (EE_COLOR, JOINT_AXIS_COLOR, LINK_COLOR, STYLES, TRIAD_FRACTION, RobotView,  # noqa: F401
-                       checked_robot, line_in_box, typical_size, workspace_box)
+from .viewbase import (  # noqa: F401
+    EE_COLOR,
+    JOINT_AXIS_COLOR,
+    LINK_COLOR,
+    STYLES,
+    TRIAD_FRACTION,
+    RobotView,
+    checked_robot,
+    line_in_box,
+    typical_size,
+    workspace_box,
+)
 
 __all__ = ["RobotView", "RobotView3D", "RobotView2D", "robot_view", "triad_segments",
            "FrameLabels", "FrameLabels3D", "AXIS_COLORS", "default_q", "workspace_box",

@@ -25,7 +25,7 @@ from dhlab.grading.release import generate
 from dhlab.validation import DHLabError
 
 ROOT = Path(__file__).resolve().parents[2]
-SOURCE = ROOT / generate.CHECKOUT_SOURCE                # the teacher's notebook, with the solutions
+SOURCE = generate.find_source()                         # the teacher's notebook: computed, in a temporary folder
 STUDENT = ROOT / "notebooks" / "08_puma_assignment.ipynb"
 q1, q2, q3, q4, q5, q6 = A.joint_variables(6)
 QS = (q1, q2, q3, q4, q5, q6)
@@ -35,6 +35,7 @@ QS = (q1, q2, q3, q4, q5, q6)
                                   "assignment.answers", "assignment.checks", "assignment.checks.analysis",
                                   "assignment.checks.links", "assignment.checks.transforms",
                                   "grading.book.gradebook", "grading.release.generate", "grading.run.runner",
+                                  "grading.run.kernel", "grading.run.read_answers",
                                   "grading.run.notebook_code", "grading.run.sandbox", "grading.run.isolation",
                                   "grading.run.staging", "grading.cli"])
 def test_docstring_examples_of_the_grading_modules(name):
@@ -406,7 +407,7 @@ def test_the_student_notebook_is_clean():
             assert "import ipympl" in "".join(cell["source"])
     assert "09_sources_and_errata.ipynb" in text
     assert not (ROOT / "notebooks" / "source").exists()
-    assert SOURCE.is_file() and "notebooks" not in SOURCE.relative_to(ROOT).parts
+    assert not (ROOT / "tools" / "teacher").exists()                  # no file of the course holds the solutions
     assert sorted(p.name for p in (ROOT / "notebooks").glob("*08*")) == ["08_puma_assignment.ipynb"]
 
 
@@ -700,8 +701,8 @@ def test_numbers_of_every_type_are_read_the_same_way():
 def test_the_notebook_and_the_grader_read_through_the_same_functions():
     """The grader's kernel-side writer is built from answers.to_plain and answers.encode_json
     themselves, and the notebook's check reads through parse_json(encode_json(to_plain(...)))."""
-    from dhlab.grading.run import runner
-    code = runner._extract_code(Path("/tmp/x.json"))
+    from dhlab.grading.run import read_answers
+    code = read_answers.answer_code(Path("/tmp/x.json"))
     assert "def to_plain(" in code and "def encode_json(" in code
     ns = {"link_points": [[(np.float64(1.0), np.float64(2.0), np.float64(3.0))]]}
     raw = encode.encode_json({k: encode.to_plain(v) for k, v in ns.items()})
@@ -723,19 +724,16 @@ def test_any_answer_gets_feedback_never_an_exception():
     assert "drop the trailing 1" in A.check_part(2, {"link_points": {0: [[0, 0, -0.67183, 1]]}}).text()
 
 
-def test_the_source_notebooks_stored_feedback_is_what_the_checks_say_now():
-    """The source lives outside notebooks/ (nbval does not re-run it): its stored outputs of
-    the three check cells must still be what the checks print (`make notebooks` refreshes them)."""
+def test_the_computed_solution_earns_full_marks_in_the_notebook():
+    """The solved notebook is computed (dhlab.assignment.solution), never stored: run here, its
+    answers earn every point of the three check cells, as the notebook's checks say them."""
     nb = json.loads(SOURCE.read_text(encoding="utf-8"))
     ns = _solution_namespace()
-    for cell in nb["cells"]:
-        gid = cell["metadata"].get("nbgrader", {}).get("grade_id", "")
-        if gid.endswith("_check"):
-            part = int(gid[4])
-            stored = "".join(cell["outputs"][0]["data"]["text/plain"])
-            assert stored == A.check_part(part, ns).text()
-    figures = [c for c in nb["cells"] if "_figure(" in "".join(c["source"])]
-    assert len(figures) == 2 and all("image/png" in c["outputs"][0]["data"] for c in figures)
+    parts = [int(c["metadata"]["nbgrader"]["grade_id"][4]) for c in nb["cells"]
+             if c["metadata"].get("nbgrader", {}).get("grade_id", "").endswith("_check")]
+    assert sorted(parts) == [1, 2, 3]
+    for part in parts:
+        assert A.check_part(part, ns).full_marks, A.check_part(part, ns).text()
 
 
 # --- runs of three or more parallel axes -------------------------------------------------------
@@ -746,9 +744,9 @@ def test_a_slip_before_a_run_of_parallel_axes_costs_one_item(key):
     length off) used to carry its wrong offset along the run, and the row where the run ends paid
     too ("T4 … crosses it 0.51 m short … check d4"). Every single slip that changes how the chain
     moves costs exactly one item of part 3 (ground truth: the robot's motion, not the grader)."""
-    from support import written_answers as W
-    from dhlab.assignment.model import random_valid_frames
     from dhlab.assignment import variants as V
+    from dhlab.assignment.model import random_valid_frames
+    from support import written_answers as W
     rng = np.random.default_rng(22)
     counted = 0
     for seed in range(3):
@@ -774,9 +772,9 @@ def test_a_dropped_theta_offset_on_parallel_axes_names_theta_not_a_tiny_distance
     """Joints 2 and 3 parallel, the −90° (or +90°) of θ2 forgotten: x2 is turned about z1. The
     feedback used to say "x2 must cross z1 … 3.307e-18 m past that point … check d2" (the wrong
     parameter, a meaningless distance, and a correct d2 to change when the origin was slid)."""
-    from support import written_answers as W
-    from dhlab.assignment.model import random_valid_frames
     from dhlab.assignment import variants as V
+    from dhlab.assignment.model import random_valid_frames
+    from support import written_answers as W
     rng = np.random.default_rng(9)
     seen = 0
     for seed in range(3):
@@ -802,9 +800,9 @@ def test_a_second_slip_never_raises_the_score_on_runs_of_parallel_axes(key):
     from an answer with one slip, a second slip in another row never raises any part's score. Two
     independent slips in one run may be charged as one item (the frames there may slide: the
     trade-off documented in docs/grading/assignment.md); they are never charged as less than one."""
-    from support import written_answers as W
-    from dhlab.assignment.model import random_valid_frames
     from dhlab.assignment import variants as V
+    from dhlab.assignment.model import random_valid_frames
+    from support import written_answers as W
     rng = np.random.default_rng(23)
     robot = V.robot_of_variant(V.variant(key, 4))
     Q = np.vstack([np.zeros(robot.n)] + [[rng.uniform(max(lo, -3.0), min(hi, 3.0)) for lo, hi in robot.qlim]

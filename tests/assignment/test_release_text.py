@@ -8,7 +8,6 @@ the student.
 """
 import json
 import re
-from pathlib import Path
 
 import pytest
 
@@ -16,9 +15,9 @@ from dhlab.assignment import variants as V
 from dhlab.assignment.notebook_cells import clear_variant, release_notebook
 from dhlab.grading.book import grade_variants as GV
 from dhlab.grading.release import notebooks as R
-from dhlab.grading.release.generate import CHECKOUT_SOURCE, student_notebook
+from dhlab.grading.release.generate import find_source, student_notebook
 
-SOURCE = Path(__file__).resolve().parents[2] / CHECKOUT_SOURCE     # the teacher's notebook
+SOURCE = find_source()                  # the teacher's notebook, computed (in a temporary folder)
 
 SECRET = b"release-text-test-secret-0123456789"
 

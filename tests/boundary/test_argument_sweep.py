@@ -35,8 +35,7 @@ from dhlab.assignment import inputs as AI  # noqa: E402
 from dhlab.assignment import notebook as AS  # noqa: E402
 from dhlab.course import exercises as E  # noqa: E402
 from dhlab.course import exercises_dh as D  # noqa: E402
-from dhlab.mdh import (PrismaticMDH, mdh_matrix, to_modified, to_modified_rows, to_standard,  # noqa: E402
-                       to_standard_rows)
+from dhlab.mdh import PrismaticMDH, mdh_matrix, to_modified, to_modified_rows, to_standard, to_standard_rows  # noqa: E402
 
 X = sp.Symbol("x")
 

@@ -12,8 +12,8 @@ import sympy as sp
 
 import dhlab
 from dhlab import assignment as A
-from dhlab.chain import Link, Robot, Rot
 from dhlab.assignment import answers as ans
+from dhlab.chain import Link, Robot, Rot
 from dhlab.validation import DHLabError
 
 q1, q2 = A.joint_variables(2)

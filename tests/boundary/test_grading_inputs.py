@@ -17,12 +17,13 @@ from dhlab.assignment import answers as ans
 from dhlab.assignment import checks
 from dhlab.assignment.checks.analysis import point_text
 from dhlab.grading import cli
-from dhlab.grading.book import gradebook, submission_row as rows
-from dhlab.grading.release.generate import CHECKOUT_SOURCE, student_notebook
+from dhlab.grading.book import gradebook
+from dhlab.grading.book import submission_row as rows
+from dhlab.grading.release.generate import find_source, student_notebook
 
 q1, q2, q3, q4, q5, q6 = A.joint_variables(6)
 ROOT = Path(__file__).resolve().parents[2]
-SOURCE = ROOT / CHECKOUT_SOURCE                      # the teacher's notebook, with the solutions
+SOURCE = find_source()                               # the teacher's notebook, computed (in a temporary folder)
 STUDENT = ROOT / "notebooks" / "08_puma_assignment.ipynb"
 KERNEL_DIED = "RuntimeError: Kernel died before replying to kernel_info"
 SYNTAX = ("closing parenthesis '}' does not match opening parenthesis '[' on line 11 (98695007.py, line 14)")

@@ -236,5 +236,6 @@ def test_dhlab_validation_error_keeps_its_name_and_every_check_stays_importable(
     assert all(hasattr(validation, name) for name in validation.__all__)
     from dhlab.errors import DHLabError as ground_error
     from dhlab.units import Angle, has_angle_mark
-    from dhlab.validation.marks import Angle as marked, has_angle_mark as marks
+    from dhlab.validation.marks import Angle as marked
+    from dhlab.validation.marks import has_angle_mark as marks
     assert ground_error is DHLabError and Angle is marked and has_angle_mark is marks

@@ -32,8 +32,7 @@ from pathlib import Path
 
 import pytest
 
-from deckdriver import (DECK_HEIGHT, DECK_WIDTH, check_deck, save_json, stop_deck,
-                        with_projector)
+from deckdriver import DECK_HEIGHT, DECK_WIDTH, check_deck, save_json, stop_deck, with_projector
 from labdriver import close_notebook, open_lab, open_notebook, outputs_report, problems, run_all, with_backend
 
 HERE = Path(__file__).resolve().parent

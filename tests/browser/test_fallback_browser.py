@@ -14,9 +14,9 @@ import json
 import time
 
 import numpy as np
+from conftest import Server
 
 import labdriver
-from conftest import Server
 from labdriver import close_notebook, open_notebook, run_all
 
 

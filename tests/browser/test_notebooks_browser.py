@@ -26,8 +26,18 @@ from pathlib import Path
 
 import pytest
 
-from labdriver import (MIN_CHANGED, close_notebook, full_page_screenshot, open_notebook, outputs_report,
-                       panels, problems, run_all, with_backend, move_first_slider)
+from labdriver import (
+    MIN_CHANGED,
+    close_notebook,
+    full_page_screenshot,
+    move_first_slider,
+    open_notebook,
+    outputs_report,
+    panels,
+    problems,
+    run_all,
+    with_backend,
+)
 
 HERE = Path(__file__).resolve().parent
 NOTEBOOKS = sorted((HERE.parents[1] / "notebooks").glob("*.ipynb"))

@@ -12,9 +12,9 @@ import shutil
 from pathlib import Path
 
 import numpy as np
+from test_latency_browser import execute
 
 from labdriver import close_notebook, open_notebook, run_all, with_backend
-from test_latency_browser import execute
 
 HERE = Path(__file__).parent
 PICTURE = HERE.parents[1] / "notebooks" / "images" / "teach_ssrms.png"

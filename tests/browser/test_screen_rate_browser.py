@@ -39,7 +39,6 @@ import numpy as np
 import pytest
 
 import dhlab
-
 import labdriver
 from labdriver import NOTEBOOK_JS, close_notebook, open_notebook, run_all, settled
 from screenrate import frames_during, install, key_presses, mouse_drag, screencast_changes, stats

@@ -22,8 +22,19 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from labdriver import (MIN_CHANGED, NOTEBOOK_JS, close_notebook, full_page_screenshot, open_notebook,
-                       outputs_report, panels, problems, run_all, with_backend, move_first_slider)
+from labdriver import (
+    MIN_CHANGED,
+    NOTEBOOK_JS,
+    close_notebook,
+    full_page_screenshot,
+    move_first_slider,
+    open_notebook,
+    outputs_report,
+    panels,
+    problems,
+    run_all,
+    with_backend,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 SPANISH = ROOT / "notebooks" / "es"

@@ -16,10 +16,13 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 from dhlab import robots  # noqa: E402
-from dhlab.dh_frames import joint_axes  # noqa: E402
-from dhlab.course.exercises import seed001_DefinirTHz  # noqa: E402
-from dhlab.course.exercises import four_axis_arm, row_exercise_frames  # noqa: E402
+from dhlab.course.exercises import (  # noqa: E402
+    four_axis_arm,
+    row_exercise_frames,
+    seed001_DefinirTHz,  # noqa: E402
+)
 from dhlab.course.lessons import figures_dh, figures_homogeneous, figures_ssrms  # noqa: E402
+from dhlab.dh_frames import joint_axes  # noqa: E402
 from dhlab.transforms import Rx, trans  # noqa: E402
 from dhlab.views.framing import projected  # noqa: E402
 from support.drawn_text import drawn, text_box, visible_texts  # noqa: E402

@@ -7,8 +7,19 @@ import sympy as sp
 
 import dhlab
 from dhlab import deg2rad
-from dhlab.course.exercises import (Exercise, Feedback, available, check_choice, check_function, check_matrix,
-                                   check_solutions, check_terms, check_value, exercise, seed001_DefinirTHz)
+from dhlab.course.exercises import (
+    Exercise,
+    Feedback,
+    available,
+    check_choice,
+    check_function,
+    check_matrix,
+    check_solutions,
+    check_terms,
+    check_value,
+    exercise,
+    seed001_DefinirTHz,
+)
 from dhlab.course.exercises.homogeneous import seed000_DefinirTHz
 from dhlab.transforms import Rx, Rz, trans
 

@@ -9,16 +9,33 @@ import nbformat
 import numpy as np
 import pytest
 import sympy as sp
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 import dhlab
 from dhlab import robots
+from dhlab.course.exercises import (
+    WRIST_Q_DEG,
+    Feedback,
+    available,
+    axis_relation,
+    check_dh_row,
+    check_key_jump,
+    check_link_matrix,
+    check_parallel_pairs,
+    check_table,
+    check_thlist_slots,
+    check_wrist_centre,
+    check_x_cases,
+    compare_robots,
+    exercise,
+    four_axis_arm,
+    link_exercise_robot,
+    parallel_pairs,
+    printed_key_position,
+    row_exercise_frames,
+)
 from dhlab.dh_frames import dh_from_axes, joint_axes
-from dhlab.course.exercises import (WRIST_Q_DEG, available, axis_relation, check_dh_row, check_key_jump,
-                                check_link_matrix, check_parallel_pairs, check_table, check_thlist_slots,
-                                check_wrist_centre, check_x_cases, compare_robots, exercise, four_axis_arm,
-                                link_exercise_robot, parallel_pairs, printed_key_position, row_exercise_frames)
-from dhlab.course.exercises import Feedback
 from dhlab.transforms import Rz, dh_matrix, trans
 from support.nbmarks import checks_output, ignores_output
 
@@ -285,7 +302,7 @@ DH_KEYS = [key for key in available() if int(key.split(".")[0]) >= 5]      # the
 
 def test_one_registry_serves_every_notebook():
     assert DH_KEYS == list(RIGHT) and available()[0] == "1.1"
-    from dhlab.course import exercises_dh                       # the old name, kept for one release
+    from dhlab.course import exercises_dh  # the old name, kept for one release
     assert exercises_dh.exercise is exercise
     with pytest.raises(KeyError, match=r"did you mean '5\.3'"):
         exercise("5.4")

@@ -6,8 +6,14 @@ import numpy as np
 import pytest
 
 import dhlab
-from dhlab.course.lessons.lesson_dh_convention import (fmt, measured_row, measured_rows_agree, place_x,
-                                               prismatic_a_lines, three_cases)
+from dhlab.course.lessons.lesson_dh_convention import (
+    fmt,
+    measured_row,
+    measured_rows_agree,
+    place_x,
+    prismatic_a_lines,
+    three_cases,
+)
 from dhlab.transforms import dh_matrix
 from dhlab.validation import DHLabError
 

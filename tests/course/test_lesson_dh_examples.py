@@ -8,9 +8,19 @@ import pytest
 import sympy as sp
 
 import dhlab
-from dhlab.course.lessons.lesson_dh_examples import (check_cases, compare_with_slide, elbow_flipped, fmt, from_slide,
-                                             hand_derived_003, read_rows_at_zero, signed_angle, wrist_centre,
-                                             wrist_centre_check, wrist_centre_panel)
+from dhlab.course.lessons.lesson_dh_examples import (
+    check_cases,
+    compare_with_slide,
+    elbow_flipped,
+    fmt,
+    from_slide,
+    hand_derived_003,
+    read_rows_at_zero,
+    signed_angle,
+    wrist_centre,
+    wrist_centre_check,
+    wrist_centre_panel,
+)
 from dhlab.data import load as load_data
 from dhlab.validation import DHLabError
 

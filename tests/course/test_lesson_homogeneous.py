@@ -5,8 +5,7 @@ import pytest
 import sympy as sp
 
 from dhlab.course.exercises import seed001_DefinirTHz
-from dhlab.course.lessons.lesson_homogeneous import (fmt, matrix_text, seed001_rotation_block, seed002_A,
-                                             seed004_eq1)
+from dhlab.course.lessons.lesson_homogeneous import fmt, matrix_text, seed001_rotation_block, seed002_A, seed004_eq1
 from dhlab.transforms import Rz, dh_matrix, trans
 from dhlab.validation import DHLabError
 

@@ -8,9 +8,16 @@ import pytest
 import sympy as sp
 
 import dhlab
-from dhlab.course.lessons.lesson_pr_mechanism import (branch_residuals, branches_within_limits, compare_methods, fmt,
-                                              geometric_examples_figure, ik_report, pr_mechanism_figure,
-                                              workspace_report)
+from dhlab.course.lessons.lesson_pr_mechanism import (
+    branch_residuals,
+    branches_within_limits,
+    compare_methods,
+    fmt,
+    geometric_examples_figure,
+    ik_report,
+    pr_mechanism_figure,
+    workspace_report,
+)
 from dhlab.validation import DHLabError
 
 

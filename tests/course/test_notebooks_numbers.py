@@ -20,6 +20,7 @@ from pathlib import Path
 
 import nbformat
 import pytest
+
 from support.nbmarks import checks_output, ignores_output
 
 NOTEBOOKS = Path(__file__).resolve().parents[2] / "notebooks"

@@ -5,8 +5,16 @@ import pytest
 import dhlab
 import dhlab.course.exercises
 from dhlab.course.lessons.dh_first_robot import DRAWN_Q, FIRST_ROBOT_ROWS, first_robot
-from dhlab.course.predict import (Prediction, case_prediction, check_row_prediction, entry_prediction,
-                                  point_prediction, reveal, row_prediction, step_prediction)
+from dhlab.course.predict import (
+    Prediction,
+    case_prediction,
+    check_row_prediction,
+    entry_prediction,
+    point_prediction,
+    reveal,
+    row_prediction,
+    step_prediction,
+)
 from dhlab.mdh import to_modified
 from dhlab.validation import DHLabError
 

@@ -14,9 +14,9 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 from dhlab import robots  # noqa: E402
-from dhlab.course.lessons import figures_ssrms  # noqa: E402
 from dhlab.course.exercises import four_axis_arm  # noqa: E402
 from dhlab.course.exercises.ssrms import printed_key_position  # noqa: E402
+from dhlab.course.lessons import figures_ssrms  # noqa: E402
 from dhlab.course.lessons.ssrms_program import KEYS, SeedProgram  # noqa: E402
 from dhlab.course.lessons.ssrms_steps import frames_b, x_steps, z_axes  # noqa: E402
 from dhlab.validation import DHLabError  # noqa: E402

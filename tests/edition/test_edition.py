@@ -424,6 +424,7 @@ def test_the_home_lists_the_spanish_assignment_beside_the_english_one():
 def test_a_spanish_release_uses_the_editions_text(tmp_path):
     """Every markdown cell the variant leaves alone reads as in notebooks/es/08 (one translation, one catalog)."""
     import json
+
     from dhlab.grading.release import notebooks as R
     roster = tmp_path / "roster.csv"
     roster.write_text("id\nana\n", encoding="utf-8")

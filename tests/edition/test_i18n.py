@@ -102,6 +102,7 @@ def test_every_module_belongs_to_exactly_one_domain():
 def test_a_grader_message_is_found_through_the_lessons_catalog():
     """``_`` looks in the lessons' catalog, then the grader's: one function for both."""
     import gettext
+
     from dhlab import i18n
     es = i18n.translations("es")
     assert isinstance(es, gettext.GNUTranslations)
@@ -254,9 +255,10 @@ def test_a_table_feedback_in_spanish(spanish):
 
 
 def test_a_panel_readout_in_spanish(spanish):
+    import numpy as np
+
     from dhlab.views.stepthrough import motion_text
     from dhlab.views.teach import pose_text
-    import numpy as np
     assert motion_text(1.5, 0.0, 2.0, 0.0, 0.0, "m") == \
         "<b>Paso 2 de 4: Tz(d)</b>, d = 2 m: trasladar d a lo largo de z<sub>i−1</sub>. Hecho: 50 %."
     assert pose_text(np.eye(4), "m").startswith("<b>Efector final</b> (<i>end effector</i>)<br>posición [m]")

@@ -8,8 +8,8 @@ is in every book), and one strips the record. ``dhlab-grade --secret-file --rele
 must give the honest ones full marks, say what happened to the others, and grade those
 against the roster's variant (``--fallback roster``) or not at all (``--fallback none``).
 
-The solver lives in the tests (tests/support/solved_notebooks.py), not in the package: a function
-that solves a student's notebook must not ship with the course.
+The solved notebooks are the package's own answers (``dhlab.assignment.solution``) in the released
+notebooks' answer cells (tests/support/solved_notebooks.py), with the reference frames or others.
 """
 import copy
 import csv

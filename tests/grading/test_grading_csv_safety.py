@@ -19,11 +19,11 @@ from dhlab import DHLabError
 from dhlab.assignment import variants as V
 from dhlab.grading.book import csvsafe
 from dhlab.grading.book import grade_variants as GV
+from dhlab.grading.book.gradebook import COLUMNS, VARIANT_COLUMNS, feedback_filename, read_csv, write_csv
 from dhlab.grading.export import lms
+from dhlab.grading.export.command import main as export
 from dhlab.grading.release import notebooks as R
 from dhlab.grading.release import roster
-from dhlab.grading.export.command import main as export
-from dhlab.grading.book.gradebook import COLUMNS, VARIANT_COLUMNS, feedback_filename, read_csv, write_csv
 
 SECRET = b"0123456789abcdef-the-teacher-secret"
 HOSTILE = ["=1+2", "+SUM(A1)", "-2+3", "@cmd", "\tx", "\rx", "'quoted", "''twice", "José", "ana"]

@@ -16,7 +16,8 @@ from pathlib import Path
 
 import pytest
 
-from dhlab.grading.export import gradescope, gradescope_local as GL
+from dhlab.grading.export import gradescope
+from dhlab.grading.export import gradescope_local as GL
 from dhlab.grading.export.command import main as export
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -201,7 +202,9 @@ LOOP = ("import glob, sys, time\n"
         "        try: open(path, 'w').write('{{\"score\": 100, \"output\": \"forged\", \"tests\": []}}')\n"
         "        except OSError: pass\n"
         "    time.sleep(0.1)\n")
+started, proof = os.pipe()                # close-on-exec: the daemon's exec closes its copy
 if os.fork() == 0:                       # a daemon: out of the kernel's group and parent, it waits
+    os.close(started)
     os.setsid()
     if os.fork() == 0:
         null = os.open(os.devnull, os.O_RDWR)
@@ -209,6 +212,9 @@ if os.fork() == 0:                       # a daemon: out of the kernel's group a
             os.dup2(null, fd)
         os.execv(sys.executable, [sys.executable, "-c", LOOP, MARK, RESULTS])   # MARK: seen in ps
     os._exit(0)
+os.close(proof)
+os.read(started, 1)                      # end of file: the daemon runs its loop (on a loaded machine
+os.close(started)                        # the notebook could otherwise end before the exec)
 print("daemon started")'''
 
 

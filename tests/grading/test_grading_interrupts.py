@@ -23,12 +23,13 @@ import pytest
 
 from dhlab.assignment import encode
 from dhlab.grading import cli
-from dhlab.grading.book import gradebook, submission_row as rows
+from dhlab.grading.book import gradebook
+from dhlab.grading.book import submission_row as rows
+from dhlab.grading.release.generate import find_source
 from dhlab.grading.run import cleanup, selfcheck
-from dhlab.grading.release.generate import CHECKOUT_SOURCE
 
 ROOT = Path(__file__).resolve().parents[2]
-SOURCE = ROOT / CHECKOUT_SOURCE                      # the teacher's notebook, with the solutions
+SOURCE = find_source()                               # the teacher's notebook, computed (in a temporary folder)
 STUDENT = ROOT / "notebooks" / "08_puma_assignment.ipynb"
 SUBMISSIONS = ROOT / "tests" / "data" / "submissions"
 AGAIN = "(not the student's fault: grade again with --resume)"
@@ -180,7 +181,7 @@ def _fake_runs(monkeypatch, enough_mb):
         if limits.memory_mb < enough_mb:
             return {"limit": "memory", "errors": [], "answers_error": "the kernel did not write the answers"}
         return {"errors": [], "answers_json": FULL}
-    monkeypatch.setattr("dhlab.grading.run.launch.run_submission", run)
+    monkeypatch.setattr("dhlab.grading.run.selfcheck.run_submission", run)      # as selfcheck imported it
     return seen
 
 

@@ -11,9 +11,9 @@ import io
 
 import pytest
 
+from dhlab.grading.book.gradebook import COLUMNS, feedback_filename, write_csv
 from dhlab.grading.export import lms
 from dhlab.grading.export.command import main as export
-from dhlab.grading.book.gradebook import COLUMNS, feedback_filename, write_csv
 
 
 def _row(submission, score, status="ok", parts=("", "", "")):

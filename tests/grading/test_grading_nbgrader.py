@@ -2,11 +2,11 @@
 
     make test-nbgrader        # installs nbgrader into .venv, then runs this file
 
-The source notebook is marked as nbgrader marks notebooks, so a teacher who uses nbgrader
-can put it in ``source/<assignment>/`` and run ``nbgrader generate_assignment``. With the
-code stub set to ``# YOUR CODE HERE`` (see dhlab.grading.release.generate) nbgrader's release is
-our student notebook, cell for cell. ``--no-db`` keeps nbgrader away from its database
-(which also needs ``alembic`` on the PATH).
+The source notebook (computed: dhlab.assignment.solution, never stored) is marked as nbgrader
+marks notebooks, so a teacher who uses nbgrader can put it in ``source/<assignment>/`` and run
+``nbgrader generate_assignment``. With the code stub set to ``# YOUR CODE HERE`` (see
+dhlab.grading.release.generate) nbgrader's release is our student notebook, cell for cell.
+``--no-db`` keeps nbgrader away from its database (which also needs ``alembic`` on the PATH).
 """
 import json
 import shutil
@@ -18,8 +18,10 @@ import pytest
 
 pytest.importorskip("nbgrader")
 
+from dhlab.grading.release.generate import find_source  # noqa: E402  (after the skip: nbgrader is optional)
+
 ROOT = Path(__file__).resolve().parents[2]
-SOURCE = ROOT / "tools" / "teacher" / "08_puma_assignment.ipynb"       # the teacher's, with the solutions
+SOURCE = find_source()            # the teacher's, with the solutions: computed, in a temporary folder
 STUDENT = ROOT / "notebooks" / "08_puma_assignment.ipynb"
 CONFIG = """c = get_config()
 c.CourseDirectory.root = {root!r}

@@ -22,6 +22,7 @@ import pytest
 
 from dhlab.grading.export import gradescope
 from dhlab.grading.run import cgroups, isolation, runner, sandbox
+from dhlab.grading.run.kernel import PASSED_ENV, Kernel, kernel_environment
 from support.grader import write_notebook
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -54,7 +55,7 @@ def _answers(result):
 
 
 def test_the_kernel_environment_is_an_allow_list():
-    env = runner.kernel_environment(Path("/k"), "tok", environ={
+    env = kernel_environment(Path("/k"), "tok", environ={
         "CANVAS_API_TOKEN": "xyz", "AWS_SECRET_ACCESS_KEY": "s", "LANG": "es_ES.UTF-8", "LC_ALL": "$(rm -rf /)",
         "PYTHONPATH": "/teacher/private", "HOME": "/root", "DHLAB_LANGUAGE": "es"})
     assert "CANVAS_API_TOKEN" not in env and "AWS_SECRET_ACCESS_KEY" not in env
@@ -62,7 +63,7 @@ def test_the_kernel_environment_is_an_allow_list():
     assert "LC_ALL" not in env                       # not a locale's name: not passed
     assert "PYTHONPATH" not in env                   # dhlab is not found through it here
     assert env["HOME"] == env["TMPDIR"] == "/k" and env["DHLAB_GRADE_TOKEN"] == "tok"
-    assert set(env) <= set(runner.PASSED_ENV) | {
+    assert set(env) <= set(PASSED_ENV) | {
         "PATH", "PYTHONDONTWRITEBYTECODE", "PYTHONNOUSERSITE", "PYTHONHASHSEED", "OPENBLAS_NUM_THREADS",
         "OMP_NUM_THREADS", "MKL_NUM_THREADS", "MPLBACKEND", "HOME", "TMPDIR", "IPYTHONDIR", "MPLCONFIGDIR",
         "JUPYTER_RUNTIME_DIR", "DHLAB_GRADE_TOKEN", "PYTHONPATH"}
@@ -188,7 +189,7 @@ def test_flooding_cells_keep_their_answers(tmp_path):
 
 def test_a_cell_waiting_for_a_cpu_is_not_charged_for_it():
     """The cell's limit counts the time it ran or slept, not the time it waited for a CPU."""
-    class Fake(runner._Kernel):
+    class Fake(Kernel):
         def __init__(self):
             self.clock = 0.0
 

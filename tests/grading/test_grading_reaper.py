@@ -22,7 +22,10 @@ if os.fork() == 0:                      # the "kernel": starts a daemon (double 
             open(mark, "w").write(f"{os.getpid()} {time.time()}")
             time.sleep(0.05)
     os._exit(0)
-time.sleep(0.5)                         # the daemon runs, orphaned
+for _ in range(400):                    # until the daemon runs, orphaned (on a loaded machine: seconds)
+    if os.path.exists(mark):
+        break
+    time.sleep(0.05)
 below = reaper.descendants()
 left = reaper.end_descendants() if sys.argv[2] == "end" else []
 print(len(below), len(left), len(reaper.descendants()))

@@ -17,13 +17,12 @@ import pytest
 from dhlab.assignment import variants as V
 from dhlab.assignment.answers import parse_answers
 from dhlab.assignment.checks import check_all
-from dhlab.grading.release import notebooks as R
 from dhlab.grading.book.gradebook import status_text
-from dhlab.i18n import _, speaking
 from dhlab.grading.book.progress import summary as _summary
+from dhlab.grading.release import notebooks as R
 from dhlab.grading.release.language import notebook_language, own_robot_text_es, raw_notebook_language
+from dhlab.i18n import _, speaking
 from dhlab.validation import DHLabError
-
 from support.solved_notebooks import released_robot, solved, write
 
 SECRET = b"grading-spanish-test-secret-0123456789"
@@ -243,8 +242,8 @@ def _spanish_words(nb):
         if cell.get("metadata", {}).get("nbgrader", {}).get("grade_id") == "part1_answers":
             text = "".join(cell["source"])
             for en, es in words.items():
-                text = text.replace(f"'{en}'", f"'{es}'")
-            cell["source"] = text.replace("joint_types = 'RRRRRR'", "joint_types = ['rotacional'] * 6")
+                text = text.replace(f"'{en}'", f"'{es}'").replace(f'"{en}"', f'"{es}"')
+            cell["source"] = re.sub(r"joint_types = [\'\"]R{6}[\'\"]", "joint_types = ['rotacional'] * 6", text)
     return nb
 
 

@@ -9,12 +9,12 @@ import time
 
 import pytest
 
+from dhlab.assignment.answers import Unreadable, parse_answers
+from dhlab.assignment.checks import check_part1
 from dhlab.course.checks.case_words import read_case_words
 from dhlab.course.exercises.dh_rules import read_case
 from dhlab.grading.run import notebook_code as NC
 from dhlab.grading.run import staging
-from dhlab.assignment.answers import Unreadable, parse_answers
-from dhlab.assignment.checks import check_part1
 from dhlab.i18n import speaking
 
 PUMA_CASES = ["intersect", "parallel", "skew", "intersect", "intersect"]

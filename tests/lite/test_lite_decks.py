@@ -24,8 +24,8 @@ import litedriver as driver
 BROWSER_TIER = Path(__file__).resolve().parents[1] / "browser"
 sys.path.insert(0, str(BROWSER_TIER))
 sys.path.insert(0, str(BROWSER_TIER.parent))
-from support import deck_rules  # noqa: E402
 from deckdriver import DECK_HEIGHT, DECK_WIDTH, check_deck, stop_deck, with_projector  # noqa: E402
+from support import deck_rules  # noqa: E402
 
 SCREENSHOTS = Path(__file__).resolve().parents[2] / "build" / "lite-screenshots"
 BACKENDS = ["inline", "widget"]

@@ -241,7 +241,8 @@ def test_site_size(site, measurements):
     assert not (site / "files" / "source").exists(), "the assignment's source (its answers) must not ship"
     wheels = list(site.rglob("dhlab-*.whl"))
     assert wheels, "the site has no dhlab wheel"
-    for wheel in wheels:                 # the solutions stay in the repository (tools/teacher/): never on a site
+    # no file of the course holds the solutions (dhlab-assign solutions computes them): never on a site
+    for wheel in wheels:
         with zipfile.ZipFile(wheel) as archive:
             leaked = [n for n in archive.namelist()
                       if n.endswith(".ipynb") and b"BEGIN SOLUTION" in archive.read(n)]

@@ -240,8 +240,13 @@ def test_toolbox_mdh_models_built_from_their_tables(model):
 
 
 # --- the DH checkers recognise a modified-DH answer and say so ----------------------------------------
-from dhlab.course.exercises import (check_dh_row, check_link_matrix, check_table,  # noqa: E402
-                                       link_exercise_robot, row_exercise_frames)
+from dhlab.course.exercises import (  # noqa: E402
+    check_dh_row,
+    check_link_matrix,
+    check_table,
+    link_exercise_robot,
+    row_exercise_frames,
+)
 
 ARM = [("q1", 0.5, 0.2, -90), ("q2 - 90", 0, 0.5, 0), ("q3", 0, 0, -90), ("q4", 0.5, 0, 0)]
 

@@ -11,7 +11,6 @@ import pytest
 import dhlab
 from dhlab import ik, robots
 from dhlab.transforms import Rz, Tz, dh_matrix, is_rigid, trans
-
 from support.seeddata import DATA, load_cases
 
 CASES = load_cases()

@@ -7,7 +7,6 @@ import sympy as sp
 
 from dhlab import robots, symbolic
 from dhlab.symbolic import exact
-
 from support.seeddata import DATA
 
 PRINTED = json.loads((DATA / "seed002_printed_A.json").read_text(encoding="utf-8"))

@@ -8,6 +8,7 @@ def test_notebook_kernels_use_private_unix_sockets():
     import os
 
     import nbval.kernel
+
     from support.kernelsockets import PrivateSocketKernelManager
 
     assert nbval.kernel.KernelManager is PrivateSocketKernelManager

@@ -1,7 +1,8 @@
 """What a student installs: the package holds what it reads at run time, and neither the maintainers'
-tools (tools/) nor the teacher's solutions (tools/teacher/); what needs the solutions finds them in the
-course's repository or where the teacher says (--source), and says where to get them otherwise."""
+tools (tools/) nor a file of the teacher's solutions; what needs the solutions computes them
+(dhlab.assignment.solution), or reads the teacher's own where the teacher says (--source)."""
 import ast
+import json
 import sys
 from pathlib import Path
 from types import SimpleNamespace
@@ -9,12 +10,11 @@ from types import SimpleNamespace
 import pytest
 
 from dhlab.grading.release import generate
-from dhlab.grading.run import selfcheck
 from dhlab.grading.release.language import SPANISH_TEXTS
+from dhlab.grading.run import selfcheck
 
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGE = ROOT / "dhlab"
-TEACHER = ROOT / generate.CHECKOUT_SOURCE
 
 
 def package_data() -> dict:
@@ -23,18 +23,18 @@ def package_data() -> dict:
 
 
 def test_the_shipped_student_notebook_is_the_course_s():
-    """dhlab-assign starts from the package's copy: the very notebook the course hands out."""
+    """dhlab-assign starts from the package's copy: the very notebook the course hands out, and
+    exactly what the generator makes of its solved notebook (no answer typed in, nothing stale)."""
     assert generate.TEMPLATE.read_bytes() == (ROOT / "notebooks" / generate.NOTEBOOK).read_bytes(), \
         "run python -m dhlab.grading.release.generate (make notebooks)"
-    assert generate.generate(TEACHER, generate.TEMPLATE, check=True)
+    assert generate.generate(generate.course_solved(ROOT), generate.TEMPLATE, check=True)
+    assert generate.main(["--check"]) == 0
 
 
-def test_the_teacher_s_solutions_are_in_the_repository_not_in_the_package():
-    assert "BEGIN SOLUTION" in TEACHER.read_text(encoding="utf-8")
+def test_no_notebook_of_the_package_holds_a_solution():
     notebooks = list(PACKAGE.rglob("*.ipynb"))
     assert generate.TEMPLATE in notebooks
     assert not [p for p in notebooks if "BEGIN SOLUTION" in p.read_text(encoding="utf-8")]
-    assert not any("notebooks" in p.relative_to(ROOT).parts for p in [TEACHER])
 
 
 def test_the_package_data_is_what_the_runtime_reads():
@@ -56,24 +56,24 @@ def test_the_package_never_imports_the_tools():
             assert not [n for n in names if n.split(".")[0] == "tools"], path
 
 
-def test_the_source_is_found_in_a_checkout_and_only_there(tmp_path, monkeypatch):
-    monkeypatch.chdir(ROOT / "notebooks")                    # anywhere inside the checkout
-    assert generate.find_source() == TEACHER
-    assert generate.find_source(TEACHER) == TEACHER
-    monkeypatch.chdir(tmp_path)                              # a teacher who pip-installed dhlab
-    with pytest.raises(generate.SourceMissing, match="tools/teacher/08_puma_assignment.ipynb.*--source"):
-        generate.find_source()
-    with pytest.raises(generate.SourceMissing, match="no notebook at"):
+def _sources(nb) -> list:
+    return ["".join(cell["source"]) for cell in nb["cells"]]
+
+
+def test_the_solution_is_computed_anywhere_and_a_teacher_s_own_is_read_where_given(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)                              # a teacher who pip-installed dhlab: no checkout
+    computed = generate.find_source()
+    assert "### BEGIN SOLUTION" in computed.read_text(encoding="utf-8")
+    assert _sources(json.loads(computed.read_text(encoding="utf-8"))) == _sources(generate.solution_notebook())
+    assert generate.find_source(computed) == computed        # a teacher's own source, as given
+    with pytest.raises(generate.SourceMissing, match="no notebook at.*--source"):
         generate.find_source(tmp_path / "missing.ipynb")
-
-
-def test_outside_a_checkout_generate_and_the_self_check_say_where_to_get_the_source(tmp_path, monkeypatch, capsys):
-    monkeypatch.chdir(tmp_path)
-    assert generate.main([]) == 2
-    assert "git clone" in capsys.readouterr().err
     with pytest.raises(selfcheck.SelfCheckError, match="nothing was graded.*--source"):
-        selfcheck.solution(SimpleNamespace(source=None))
-    assert selfcheck.solution(SimpleNamespace(source=TEACHER)) == TEACHER
+        selfcheck.solution(SimpleNamespace(source=tmp_path / "missing.ipynb"), tmp_path / "s")
+    written = selfcheck.solution(SimpleNamespace(source=None), tmp_path / "s")
+    assert _sources(json.loads(written.read_text(encoding="utf-8"))) == _sources(generate.solution_notebook())
+    assert selfcheck.solution(SimpleNamespace(source=computed), tmp_path / "t") == computed
     student = tmp_path / "student.ipynb"                     # any source, given with -o
-    assert generate.main([str(TEACHER), "-o", str(student)]) == 0
+    assert generate.main([str(computed), "-o", str(student)]) == 0
     assert student.read_bytes() == generate.TEMPLATE.read_bytes()
+    assert generate.main([]) == 2 and "-o STUDENT" in capsys.readouterr().err

@@ -14,18 +14,17 @@ import sys
 import tempfile
 from pathlib import Path
 
+from dhlab.grading.release.generate import find_source
+
 ROOT = Path(__file__).resolve().parents[2]                              # the repository
-SOURCE = ROOT / "tools" / "teacher" / "08_puma_assignment.ipynb"       # the teacher's, with the solutions
+SOURCE = find_source()               # the teacher's solved notebook: computed, in a temporary folder
 
 
 def package_copy(base: Path | None = None) -> Path:
     """dhlab copied into ``base`` (default: a new temporary folder), a folder every user can read (the
-    kernels' users must import it), with the teacher's solution where a checkout has it (the grader runs
-    from there: its self-check finds it)."""
+    kernels' users must import it). Nothing else: the grader's self-check computes the teacher's solution."""
     base = Path(tempfile.mkdtemp(prefix="dhlab-test-pkg-")) if base is None else base
     shutil.copytree(ROOT / "dhlab", base / "dhlab", ignore=shutil.ignore_patterns("__pycache__"))
-    (base / "tools" / "teacher").mkdir(parents=True)
-    shutil.copy(SOURCE, base / "tools" / "teacher" / SOURCE.name)
     for path in [base, *base.rglob("*")]:
         path.chmod(0o755 if path.is_dir() else 0o644)
     return base

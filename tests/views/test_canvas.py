@@ -12,7 +12,7 @@ from PIL import Image
 
 import dhlab
 from dhlab.validation import DHLabError
-from dhlab.views import livefigure
+from dhlab.views import backend, notebook_cell
 from dhlab.views.livefigure import LiveFigure, choose_backend
 from dhlab.views.scene import Unsupported, describe_scene
 
@@ -156,13 +156,13 @@ def test_a_hidpi_screen_gets_a_sharper_picture_of_the_same_size():
 def test_backend_names_and_the_environment_override(monkeypatch):
     monkeypatch.delenv("DHLAB_BACKEND", raising=False)
     # another test in this process may have switched matplotlib to ipympl: decide both ways
-    monkeypatch.setattr(livefigure, "ipympl_active", lambda: False)
+    monkeypatch.setattr(backend, "ipympl_active", lambda: False)
     assert choose_backend("auto") == "image"           # no kernel here: nothing shows a widget
-    monkeypatch.setattr(livefigure, "_in_kernel", lambda: True)
+    monkeypatch.setattr(backend, "in_kernel", lambda: True)
     assert choose_backend("auto") == "canvas"          # in a kernel: the browser paints
-    monkeypatch.setattr(livefigure, "_anywidget_imports", lambda: False)
+    monkeypatch.setattr(backend, "anywidget_imports", lambda: False)
     assert choose_backend("auto") == "image"           # ... if anywidget is there
-    monkeypatch.setattr(livefigure, "ipympl_active", lambda: True)
+    monkeypatch.setattr(backend, "ipympl_active", lambda: True)
     assert choose_backend("auto") == "ipympl"          # under %matplotlib widget
     assert choose_backend("canvas") == "canvas"
     monkeypatch.setenv("DHLAB_BACKEND", "canvas")
@@ -301,9 +301,9 @@ def _in_a_kernel_loop(monkeypatch, front_end: bool, say_loaded: bool):
     kernel would between cells. Returns the panel and its first figure widget."""
     import asyncio
 
-    monkeypatch.setattr(livefigure, "_WATCH_S", 0.01)
-    monkeypatch.setattr(livefigure, "FRONT_END_S", 0.04)
-    monkeypatch.setattr(livefigure, "_current_cell", lambda: ("cell-1", 1) if front_end else None)
+    monkeypatch.setattr(notebook_cell, "_WATCH_S", 0.01)
+    monkeypatch.setattr(notebook_cell, "FRONT_END_S", 0.04)
+    monkeypatch.setattr(notebook_cell, "current_cell", lambda: ("cell-1", 1) if front_end else None)
 
     async def scenario():
         panel, widget, _browser = canvas_panel()

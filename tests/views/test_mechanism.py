@@ -5,10 +5,10 @@ import pytest
 
 import dhlab
 from dhlab import robots
+from dhlab.validation import DHLabError
 from dhlab.views import triads
 from dhlab.views.mechanism import CYLINDER_HALF, Mechanism
 from dhlab.views.view import robot_view
-from dhlab.validation import DHLabError
 
 DH_ROBOTS = [robots.ssrms, robots.puma560, robots.seed002_4dof, robots.seed002_6dof, robots.seed003_6dof,
              robots.prr_example, robots.rrr_example]

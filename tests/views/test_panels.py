@@ -11,8 +11,7 @@ import pytest  # noqa: E402
 import dhlab  # noqa: E402
 from dhlab import robots  # noqa: E402
 from dhlab.views.spaces import spaces, wrap_into_limits  # noqa: E402
-from dhlab.views.stepthrough import (dh_params, dh_partial, line_in_box, motion_text,  # noqa: E402
-                               stepthrough, stepthrough_link)
+from dhlab.views.stepthrough import dh_params, dh_partial, line_in_box, motion_text, stepthrough, stepthrough_link  # noqa: E402
 
 
 # --- the step-through -------------------------------------------------------------------

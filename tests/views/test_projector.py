@@ -11,10 +11,10 @@ import pytest
 
 import dhlab
 from dhlab.validation import DHLabError
-from dhlab.views import figures, panel, projector as projector_module
+from dhlab.views import figures, panel
+from dhlab.views import projector as projector_module
 from dhlab.views.figures import new_figure
-from dhlab.views.projector import (DEFAULT_SCALE, PAGE_PX, SLIDE_FIGURE_PX, WIDGETS_PX, stylesheet,
-                                   widgets_scale)
+from dhlab.views.projector import DEFAULT_SCALE, PAGE_PX, SLIDE_FIGURE_PX, WIDGETS_PX, stylesheet, widgets_scale
 
 WIDGET_TEXT_PX = 13          # ipywidgets' text at normal size: what the panels' em widths are measured in
 

@@ -9,11 +9,12 @@ import ipywidgets as widgets  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
+from ipywidgets.widgets.widget import _instances  # noqa: E402  (every live widget)
 
 import dhlab  # noqa: E402
-from dhlab import livefigure, robots  # noqa: E402
+from dhlab import robots  # noqa: E402
+from dhlab.views import notebook_cell  # noqa: E402
 from dhlab.views.teach import teach  # noqa: E402
-from ipywidgets.widgets.widget import _instances  # noqa: E402  (every live widget)
 
 
 def numbers(html, *names):
@@ -152,8 +153,8 @@ def test_200_slider_updates_keep_widgets_figures_and_artists_constant():
 
 def test_rerunning_a_cell_closes_the_panels_of_its_previous_run(monkeypatch):
     run = {"count": 1}
-    monkeypatch.setattr(livefigure, "_current_cell", lambda: ("cell-a", run["count"]))
-    monkeypatch.setattr(livefigure, "_made_by_cell", {})
+    monkeypatch.setattr(notebook_cell, "current_cell", lambda: ("cell-a", run["count"]))
+    monkeypatch.setattr(notebook_cell, "_made_by_cell", {})
     first = teach(robots.pr_mechanism())
     same_run = teach(robots.pr_mechanism())         # two panels in one cell: both stay
     assert first.comm is not None and same_run.comm is not None

@@ -10,8 +10,7 @@ import pytest  # noqa: E402
 import dhlab  # noqa: E402
 from dhlab import robots  # noqa: E402
 from dhlab.views.livefigure import LiveFigure, encode_png  # noqa: E402
-from dhlab.views.view import (RobotView2D, RobotView3D, robot_view, triad_segments,  # noqa: E402
-                        workspace_box)
+from dhlab.views.view import RobotView2D, RobotView3D, robot_view, triad_segments, workspace_box  # noqa: E402
 
 ROBOTS_3D = [robots.ssrms, robots.puma560, robots.seed002_4dof, robots.seed003_6dof, robots.rrr_example]
 ROBOTS_2D = [robots.robot_no_tan_elemental_1, robots.robot_no_tan_elemental_2, robots.pr_mechanism]

@@ -29,9 +29,9 @@ import sympy as sp
 from ...i18n import N_, _
 from ...validation import as_choice
 from . import options as teacher
-from .reading import Refused, Sampler, canon, close, is_unanswered, rounding_slack, to_sympy_matrix, typed_decimals
 from .feedback import Feedback, correct, unanswered, wrong
 from .judge import judge
+from .reading import Refused, Sampler, canon, close, is_unanswered, rounding_slack, to_sympy_matrix, typed_decimals
 
 __all__ = ["check_matrix", "TRANSPOSED_ROTATION", "num"]
 

@@ -23,10 +23,10 @@ import sympy as sp
 
 from ...i18n import _
 from . import options as teacher
-from .reading import Refused, close, is_unanswered, rounding_slack, to_vector, typed_decimals
 from .feedback import Feedback, correct, unanswered, wrong
 from .judge import judge
 from .matrix import check_matrix, num
+from .reading import Refused, close, is_unanswered, rounding_slack, to_vector, typed_decimals
 
 __all__ = ["check_value", "check_solutions"]
 

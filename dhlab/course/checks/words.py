@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from ...i18n import _
 from . import options as teacher
-from .reading import is_unanswered
-from .case_words import words   # one normalisation for every word answer (and the grader's x_cases)
+from .case_words import words  # one normalisation for every word answer (and the grader's x_cases)
 from .feedback import Feedback, correct, short_repr, unanswered, wrong
+from .reading import is_unanswered
 
 __all__ = ["check_choice", "check_terms", "words", "in_english"]
 

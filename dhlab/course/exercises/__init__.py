@@ -60,8 +60,14 @@ from .dh_links import WRIST_Q_DEG, check_link_matrix, check_wrist_centre, link_e
 from .dh_rules import ROW_EXERCISE, check_dh_row, check_x_cases, row_exercise_frames
 from .dh_tables import check_table, compare_robots, four_axis_arm, show_axes
 from .homogeneous import seed001_DefinirTHz
-from .ssrms import (check_key_jump, check_parallel_pairs, check_thlist_slots, parallel_pairs, printed_key_position,
-                    thlist_slot)
+from .ssrms import (
+    check_key_jump,
+    check_parallel_pairs,
+    check_thlist_slots,
+    parallel_pairs,
+    printed_key_position,
+    thlist_slot,
+)
 
 __all__ = [
     "exercise", "available", "UnknownExercise",

@@ -15,10 +15,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...chain import Robot
-from ...i18n import _
 from ...dh import DHRobot
-from ...mdh import MDHRobot
+from ...i18n import _
 from ...lines import Line, relation
+from ...mdh import MDHRobot
 from ...validation import DHLabError, as_index, as_tolerance, describe
 from ..checks.feedback import Feedback, short_repr
 from ..checks.reading import Refused, to_vector

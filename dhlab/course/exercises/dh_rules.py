@@ -14,11 +14,23 @@ from ...i18n import N_, _
 from ...mdh import mdh_matrix
 from ...transforms import Rx, Rz, dh_matrix, trans
 from ...validation import DHLabError, as_matrix4, describe, rigid_problem
-from ..checks.case_words import CASE_NUMBERS as _CASE_NUMBERS, read_case_words
+from ..checks.case_words import CASE_NUMBERS as _CASE_NUMBERS
+from ..checks.case_words import read_case_words
 from ..checks.feedback import Exercise, Feedback, unanswered
 from ..checks.reading import is_unanswered
-from .dh_common import (ANGLE_TOL, Relation, as_robot, axes_of, axis_relation, number_text, quoted, read_numbers,
-                        right_answer, whole_number, wrong_answer)
+from .dh_common import (
+    ANGLE_TOL,
+    Relation,
+    as_robot,
+    axes_of,
+    axis_relation,
+    number_text,
+    quoted,
+    read_numbers,
+    right_answer,
+    whole_number,
+    wrong_answer,
+)
 from .dh_tables import four_axis_arm
 
 __all__ = ["check_x_cases", "ROW_EXERCISE", "row_exercise_frames", "check_dh_row"]

@@ -14,16 +14,36 @@ import numpy as np
 import sympy as sp
 
 from ... import robots
-from ...i18n import N_, _
 from ...dh import DHRobot
+from ...i18n import N_, _
 from ...lines import Line, closest_points
 from ...mdh import MDHRobot, to_standard
-from ...validation import (DHLabError, as_flag, as_length, as_matrix4, as_sequence, as_text, as_vector,
-                          check_length_size, describe)
+from ...validation import (
+    DHLabError,
+    as_flag,
+    as_length,
+    as_matrix4,
+    as_sequence,
+    as_text,
+    as_vector,
+    check_length_size,
+    describe,
+)
 from ..checks.feedback import Exercise, Feedback, unanswered
 from ..checks.reading import is_unanswered
-from .dh_common import (ANGLE_TOL, as_robot, as_samples, axes_of, axis_relation, number_text, quoted, right_answer,
-                        row_at_zero, vector_text, wrong_answer)
+from .dh_common import (
+    ANGLE_TOL,
+    as_robot,
+    as_samples,
+    axes_of,
+    axis_relation,
+    number_text,
+    quoted,
+    right_answer,
+    row_at_zero,
+    vector_text,
+    wrong_answer,
+)
 
 __all__ = ["four_axis_arm", "show_axes", "compare_robots", "check_table"]
 
@@ -41,7 +61,7 @@ def show_axes(axes, tool=None, ax=None, length: float = 0.3, title: str = ""):
     number; the positive sense is along the arrow (right-hand rule for a revolute joint).
     ``tool``: the end-effector point (or 4x4 pose), drawn as a star. Returns the Axes
     (its ``.figure`` is a :func:`~dhlab.views.figures.new_figure`: the last line of a cell shows it)."""
-    from ...views.figures import new_figure        # a picture on a first Run All, readable on a projector
+    from ...views.figures import new_figure  # a picture on a first Run All, readable on a projector
 
     axes, tool = _drawn_axes(axes), _drawn_tool(tool)
     length, title = as_length(length, "length"), as_text(title, "title")

@@ -37,8 +37,7 @@ def fmt(v, digits: int = 6) -> str:
 def from_slide(latex: str, robot) -> sp.Matrix:
     """A bmatrix printed on a slide as a sympy Matrix in the robot's own symbols
     ($C_k$, $S_k$: cosine and sine of joint k's variable; $l_k$, $d_k$: lengths and prismatic variables)."""
-    from sympy.parsing.sympy_parser import (implicit_multiplication_application, parse_expr,
-                                            standard_transformations)
+    from sympy.parsing.sympy_parser import implicit_multiplication_application, parse_expr, standard_transformations
     if not isinstance(latex, str) or r"\begin{bmatrix}" not in latex:
         raise DHLabError(f"expected a slide's matrix as LaTeX with \\begin{{bmatrix}}, got {describe(latex)}.")
     body = latex.split(r"\begin{bmatrix}")[1].split(r"\end{bmatrix}")[0]
@@ -197,6 +196,7 @@ def wrist_centre_panel(robot, q=None):
     """A teach panel of ``robot`` with its wrist centre as a purple dot, and an HTML line under it
     giving the centre's coordinates; returns (panel, line). Display both: ``display(panel, line)``."""
     import ipywidgets as widgets
+
     from ...views.teach import teach
 
     line, dot = widgets.HTML(), []

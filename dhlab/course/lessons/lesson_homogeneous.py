@@ -34,7 +34,7 @@ def matrix_text(T, digits: int = 6) -> str:
 
 def show(label: str, M) -> None:
     """Display ``label = M`` in LaTeX (``label`` is LaTeX, ``M`` a sympy matrix or expression)."""
-    from IPython.display import Math, display     # only when a notebook shows something
+    from IPython.display import Math, display  # only when a notebook shows something
 
     display(Math(f"{label} = {sp.latex(M)}"))
 

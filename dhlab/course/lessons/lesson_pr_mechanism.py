@@ -22,9 +22,9 @@ from ...ik import pr_mechanism_ik
 from ...units import rad2deg
 from ...validation import DHLabError, describe
 from ...views.figures import new_figure
+from ...views.view import robot_view
 from ...views.viewbase import one_pose
 from .figures_common import label, triad
-from ...views.view import robot_view
 
 __all__ = ["fmt", "show", "branch_residuals", "ik_report", "branches_within_limits", "workspace_report",
            "compare_methods", "pr_mechanism_figure", "geometric_examples_figure"]

@@ -20,8 +20,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from ...lines import relation
 from ...i18n import _
+from ...lines import relation
 from ...validation import DHLabError
 
 __all__ = ["fmt", "factors_latex", "frames_table", "same_axes", "seed_words", "axis_relations"]

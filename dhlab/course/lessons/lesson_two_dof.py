@@ -17,8 +17,8 @@ import math
 import numpy as np
 import sympy as sp
 
-from ...units import deg2rad
 from ...i18n import _
+from ...units import deg2rad
 from ...validation import DHLabError
 from ...views.camera import set_camera
 from ...views.figures import new_figure

@@ -40,9 +40,12 @@ from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
 from ...assignment import variants as V
-from ...validation import DHLabError
-from .csvsafe import restored
+from ...assignment.notebook_cells import prepare_submission
 from ...i18n import N_, _
+from ...validation import DHLabError
+from ..release.notebooks import load_teacher_records
+from ..release.roster import safe_filename
+from .csvsafe import restored
 
 __all__ = ["COLUMNS", "VariantSetup", "VariantInfo", "setup", "identify", "resolve", "columns", "status_note",
            "feedback_lines", "FALLBACKS", "release_files"]
@@ -102,7 +105,6 @@ def setup(secret_file, release=None, fallback=None) -> VariantSetup:
     if not records_file.is_file():
         raise DHLabError(f"--release {str(release)!r} has no _teacher/variants.json: pass the folder that "
                          "'dhlab-assign release ROSTER.csv -o FOLDER' wrote (not the students' copies).")
-    from ..release.notebooks import load_teacher_records
     records = load_teacher_records(records_file)
     bad = [sid for sid, record in records.items() if not V.verify(record, sid, secret).ok]
     if records and len(bad) == len(records):
@@ -120,7 +122,6 @@ def setup(secret_file, release=None, fallback=None) -> VariantSetup:
 def release_files(release: Path, records: dict) -> dict:
     """Release file stem -> student id, from the manifest (ids with unusual characters get
     another file name, see :func:`dhlab.grading.release.notebooks.safe_filename`)."""
-    from ..release.roster import safe_filename
     files = {safe_filename(sid): sid for sid in records}
     manifest = release / "_teacher" / "manifest.csv"
     try:                                                # with or without a BOM; cells unescaped (csvsafe)
@@ -179,7 +180,6 @@ def _roster_id(vs: VariantSetup, name: str) -> str | None:
 def resolve(vs: VariantSetup, nb, rel_path) -> tuple:
     """(the notebook to run or None, :class:`VariantInfo`) for the submitted notebook ``nb``
     (a dict) at ``rel_path``. None: the submission is not run (no variant to grade it against)."""
-    from ...assignment.notebook_cells import prepare_submission
     student, how = identify(vs, rel_path)
     record = nb.get("metadata", {}).get(V.METADATA_KEY) if isinstance(nb, dict) else None
     claimed = record.get("student_id") if isinstance(record, dict) else None

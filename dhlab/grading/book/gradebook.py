@@ -28,7 +28,12 @@ import tempfile
 import unicodedata
 from pathlib import Path
 
+from ...assignment import variants
+from ...assignment.family import shown_name
+from ...assignment.notebook_cells import SEAM_CELL_ID, release_notebook
 from ...i18n import N_, _
+from ..release.generate import TEMPLATE
+from .csvsafe import GRADEBOOK_BOM, csv_text, restored
 
 __all__ = ["COLUMNS", "VARIANT_COLUMNS", "PART_COLUMNS", "GRADE_AGAIN", "REMOVED", "write_atomic", "write_csv",
            "read_csv", "feedback_filename", "Cells", "error_text", "cell_error", "status_text", "feedback_text",
@@ -70,7 +75,6 @@ def write_csv(path, rows, columns=COLUMNS) -> None:
     columns — ``score``, ``max_score``, the three parts and ``seconds`` — keep their numbers;
     every other cell is text, escaped when it starts like a formula (a file named
     ``=1+2.ipynb`` is the row ``'=1+2``). UTF-8, with a BOM if :data:`~dhlab.grading.book.csvsafe.GRADEBOOK_BOM`."""
-    from .csvsafe import GRADEBOOK_BOM, csv_text
     numeric = {"score", "max_score", *PART_COLUMNS.values(), "seconds"}
     table = [list(columns)] + [[row.get(c, "") for c in columns]
                                for row in sorted(rows, key=lambda r: r["submission"])]
@@ -82,7 +86,6 @@ def read_csv(path, columns=COLUMNS) -> list:
     is not a gradebook of these columns (one graded with variants is not resumed without
     them, nor the other way round: every row is graded again). With or without a BOM; each
     cell as it was before :func:`write_csv` escaped it (the submission ``=1+2`` again)."""
-    from .csvsafe import restored
     try:
         with open(path, newline="", encoding="utf-8-sig") as f:
             reader = csv.DictReader(f)
@@ -171,9 +174,6 @@ def assignment_cells() -> tuple:
     """(the code of every locked cell of the assignment, as handed out or released with a personal
     robot; the first line of the released "Your robot" cell, which the grader rewrites; the part
     of each answer cell's first line, e.g. '# Part 2: write link_points below: …')."""
-    from ...assignment import variants
-    from ...assignment.notebook_cells import SEAM_CELL_ID, release_notebook
-    from ..release.generate import TEMPLATE
     handed_out = json.loads(TEMPLATE.read_text(encoding="utf-8"))     # the student notebook, package data
     cells = list(handed_out["cells"])
     for family in variants.family_names():        # each robot's release says its own joints (setup cell)
@@ -321,7 +321,6 @@ def feedback_text(submission: str, run: dict, report, status: str, robot_lines=(
         head = (_("How your notebook ran (cells counted from the top, code cells only):") if cells is not None
                 else _("How your notebook ran:"))
         lines += [head, *[f"  - {d}" for d in details], ""]
-    from ...assignment.family import shown_name
 
     robot = (_("your {robot}").format(robot=shown_name(report.robot)) if report.robot != "PUMA 560"
              else _("the PUMA 560"))

@@ -15,8 +15,22 @@ from __future__ import annotations
 
 import time
 
+from ...assignment import checks
+from ...assignment.answers import N_JOINTS, Answers, Unreadable, parse_json
+from ...assignment.checks import POINTS, check_all
 from ...i18n import N_, _, current_language, speaking
 from ..run.launch import run_submission
+from ..run.notebook_code import NotebookError, read_code_cells
+from . import grade_variants as GV
+from .gradebook import (
+    PART_COLUMNS,
+    Cells,
+    cell_error,
+    feedback_filename,
+    feedback_text,
+    not_graded_feedback,
+    status_text,
+)
 
 __all__ = ["grade_submission", "error_row"]
 
@@ -24,10 +38,6 @@ __all__ = ["grade_submission", "error_row"]
 def grade_submission(staged, options, iso=None) -> dict:
     """Run, read the answers, score in this process: one gradebook row (+ feedback text).
     With variants (``staged.variant``), against that student's robot."""
-    from ...assignment import checks
-    from ...assignment.answers import N_JOINTS, Answers, Unreadable, parse_json
-    from . import grade_variants as GV
-    from .gradebook import PART_COLUMNS, feedback_filename, feedback_text, status_text
 
     started = time.monotonic()
     info = staged.variant
@@ -131,7 +141,6 @@ def _grader_fault(staged, run: dict, cells, options, answers, robot) -> str:
     ours = _assignment_cell_stopped(run, cells)
     if ours is None:
         return ""
-    from ...assignment.checks import check_all
     report = check_all(answers, ref=robot)
     if report.score >= report.max_score:          # nothing was lost: the marks stand
         return ""
@@ -183,8 +192,6 @@ def _language(staged) -> str:
 
 def _cells_of(staged):
     """The submission's code cells, to name them as a student counts them (None: unknown)."""
-    from .gradebook import Cells
-    from ..run.runner import NotebookError, read_code_cells
     try:
         return Cells(read_code_cells(staged.copy)) if staged.copy is not None else None
     except (NotebookError, OSError):
@@ -194,7 +201,6 @@ def _cells_of(staged):
 def _mark_unread(report, run, cells) -> None:
     """A part whose answer cell failed (a SyntaxError, say) was not read, rather than not answered:
     its feedback says so, and which cell (the score is what was read)."""
-    from .gradebook import cell_error
     if cells is None:
         return
     for number, ename, evalue in run.get("errors", []):
@@ -206,9 +212,6 @@ def _mark_unread(report, run, cells) -> None:
 
 def _not_graded_row(staged, info) -> dict:
     """The row of a submission with no variant to grade it against (not run: no marks)."""
-    from . import grade_variants as GV
-    from ...assignment.checks import POINTS
-    from .gradebook import PART_COLUMNS, feedback_filename
     status = GV.status_note(info)
     row = {"submission": staged.submission, "score": "0", "max_score": sum(POINTS.values()), "status": status,
            "seconds": "0.0", "feedback": feedback_filename(staged.submission), "file": staged.file,
@@ -232,9 +235,6 @@ def error_row(staged, exc) -> dict:
 def _grader_error_row(staged, run: dict) -> dict:
     """Not graded, because the grader failed: the score and the parts are left empty (a 0 would
     read as the student's), the feedback says so, and ``--resume`` grades it again."""
-    from . import grade_variants as GV
-    from ...assignment.checks import POINTS
-    from .gradebook import PART_COLUMNS, feedback_filename, not_graded_feedback, status_text
 
     def status_now():
         status, note = status_text(run, report_answered=False), GV.status_note(staged.variant)

@@ -11,13 +11,21 @@ the LMS files: :mod:`dhlab.grading.export.lms`.
 from __future__ import annotations
 
 import argparse
+import csv
 import json
 import sys
 import tempfile
 from pathlib import Path
 
-from ...validation import DHLabError
 from ...i18n import _, as_teacher
+from ...validation import DHLabError
+from ..book.csvsafe import neutralised
+from ..book.grade_variants import release_files
+from ..book.gradebook import read_csv
+from ..options import shared
+from . import lms
+from .gradescope import export
+from .gradescope_local import Harness, metadata, problems
 
 __all__ = ["main"]
 
@@ -26,9 +34,10 @@ def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="dhlab-grade export", description=__doc__.splitlines()[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="target", required=True)
-    gs = sub.add_parser("gradescope", help=_("Gradescope's autograder.zip (otter-grader runs it too)"))
+    gs = sub.add_parser("gradescope", help=_("Gradescope's autograder.zip (otter-grader runs it too)"),
+                        parents=[shared(secret=_("personal variants: the teacher's secret"), source=True,
+                                        language=False)])
     gs.add_argument("-o", "--output", type=Path, default=Path("autograder.zip"))
-    gs.add_argument("--secret-file", type=Path, default=None, help=_("personal variants: the teacher's secret"))
     gs.add_argument("--release", type=Path, default=None, help=_("personal variants: the folder dhlab-assign wrote"))
     gs.add_argument("--fallback", choices=("roster", "none"), default=None)
     gs.add_argument("--timeout", type=float, default=30, help=_("seconds per cell (default 30)"))
@@ -36,10 +45,6 @@ def _parser() -> argparse.ArgumentParser:
                     help=_("seconds per notebook (default 4 × --timeout)"))
     gs.add_argument("--memory-mb", type=float, default=2048)
     gs.add_argument("--isolation", choices=("auto", "user", "none"), default="auto")
-    gs.add_argument("--source", type=Path, default=None,
-                    help=_("the teacher's solution notebook, which the autograder grades first as a self-check "
-                           "(default: tools/teacher/08_puma_assignment.ipynb of the course's repository, "
-                           "when run from it)"))
     tr = sub.add_parser("try-gradescope", help=_("run an autograder.zip here, as Gradescope would"))
     tr.add_argument("zip", type=Path)
     tr.add_argument("notebook", type=Path)
@@ -65,12 +70,10 @@ def _parser() -> argparse.ArgumentParser:
 def _lms(args) -> int:
     """The Canvas or Moodle file (see :mod:`dhlab.grading.export.lms`). Only graded rows become grades;
     the rows left out are listed, and an export that matches no student is an error (exit 2)."""
-    from . import lms
     rows = _gradebook_rows(args.gradebook)
     id_column, roster = lms.read_roster_rows(args.roster, args.id_column)
     files = {}
     if args.release is not None:
-        from ..book.grade_variants import release_files
         files = release_files(args.release, roster)
     by_id, unmatched, missing = lms.match(rows, roster, files)
     skipped = lms.not_graded(rows)
@@ -92,8 +95,6 @@ def _lms(args) -> int:
 def _gradebook_rows(path) -> list:
     """The rows of the gradebook dhlab-grade wrote (with or without a BOM, cells unescaped), or a
     clear error."""
-    import csv
-    from ..book.gradebook import read_csv
     try:
         with open(path, newline="", encoding="utf-8-sig") as f:
             columns = csv.DictReader(f).fieldnames or []
@@ -109,7 +110,6 @@ def _gradebook_rows(path) -> list:
 
 def _report(args, by_id, unmatched, missing, skipped) -> None:
     """What was exported, and every row or student left out, and why."""
-    from ..book.csvsafe import neutralised
     print(_("dhlab-grade export {target}: {count} grades in {file}.").format(
         target=args.target, count=len(by_id), file=args.output), file=sys.stderr)
     if skipped:
@@ -129,7 +129,6 @@ def _report(args, by_id, unmatched, missing, skipped) -> None:
 
 
 def _try(args) -> int:
-    from .gradescope_local import Harness, metadata, problems
     with tempfile.TemporaryDirectory(prefix="dhlab-try-gradescope-") as tmp:
         harness = Harness(args.zip, tmp)
         outcome = harness.run([args.notebook], metadata(args.email, sid=args.sid))
@@ -154,7 +153,6 @@ def _main(argv) -> int:
     args = _parser().parse_args(argv)
     try:
         if args.target == "gradescope":
-            from .gradescope import export
             out = export(args.output, args.secret_file, args.release, args.fallback, args.timeout,
                          args.total_timeout, args.memory_mb, isolation=args.isolation, source=args.source)
             print(_("dhlab-grade export: {file} (upload it to Gradescope as the autograder; never to students)").format(

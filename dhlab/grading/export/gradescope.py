@@ -42,6 +42,7 @@ And before results.json is written, every process still below the grader is kill
 """
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import re
@@ -49,9 +50,24 @@ import shutil
 import sys
 import tempfile
 import time
+import traceback
 import zipfile
 from pathlib import Path
 from types import SimpleNamespace
+
+from ...assignment import checks
+from ...assignment.checks import POINTS, TITLES
+from ...i18n import _, current_language, speaking
+from ...validation import DHLabError
+from ..book import grade_variants as GV
+from ..book.gradebook import PART_COLUMNS
+from ..book.submission_row import grade_submission
+from ..release.generate import find_source
+from ..run import selfcheck
+from ..run.isolation import setup
+from ..run.reaper import become_subreaper, end_descendants
+from ..run.staging import find_submissions, stage
+from .wheel import build_wheel
 
 __all__ = ["export", "run", "results", "main", "ROOT_ENV", "CONFIG", "VISIBILITIES", "AutograderError", "ROOT_KERNEL"]
 
@@ -104,9 +120,6 @@ def export(out, secret_file=None, release=None, fallback=None, timeout: float = 
     """Write ``autograder.zip`` (see the module). ``secret_file`` (+ ``release``): personal variants;
     ``source``: the teacher's solution (default: the course checkout's,
     :func:`~dhlab.grading.release.generate.find_source`)."""
-    from ...validation import DHLabError
-    from ..release.generate import find_source
-    from .wheel import build_wheel
     solution = find_source(source).read_bytes()
     variants = secret_file is not None
     if release is not None and not variants:
@@ -116,7 +129,6 @@ def export(out, secret_file=None, release=None, fallback=None, timeout: float = 
         if release is None:
             raise DHLabError("Gradescope names the student, not the notebook's file: give --release (the folder "
                              "'dhlab-assign release' wrote), so the student's roster id and variant can be found.")
-        from ..book import grade_variants as GV
         GV.setup(secret_file, release, fallback)           # the secret and the roster agree, or a clear error
     config = {"assignment": "puma", "timeout": timeout, "total_timeout": total_timeout or 4 * timeout,
               "memory_mb": memory_mb, "output_mb": output_mb, "isolation": isolation, "variants": variants,
@@ -158,7 +170,6 @@ def _add(z: zipfile.ZipFile, name: str, data, executable: bool = False, private:
 
 def _notebook(submission: Path, names=()) -> Path | str:
     """The submitted notebook, or what the student must fix (a str)."""
-    from ..run.staging import find_submissions
     found = find_submissions(submission)
     if len(found) == 1:
         return found[0]
@@ -192,12 +203,6 @@ def _student(metadata: dict, vs) -> str:
 
 def _grade(root: Path, config: dict) -> dict:
     """The results of the submission under ``root`` (raises :class:`AutograderError`)."""
-    from ...assignment import checks
-    from ..book import grade_variants as GV
-    from ..run import selfcheck
-    from ..book.submission_row import grade_submission
-    from ..run.isolation import setup
-    from ..run.staging import stage
     source, submission = root / "source", root / "submission"
     resolve, names = None, {"08_puma_assignment.ipynb"}
     if config.get("variants"):
@@ -251,9 +256,6 @@ def _grade(root: Path, config: dict) -> dict:
 def results(row: dict) -> dict:
     """Gradescope's results.json for one gradebook row of :func:`dhlab.grading.book.submission_row.grade_submission`:
     one test per part (its feedback as output), the rest of the feedback as the top-level output."""
-    from ...assignment.checks import POINTS, TITLES
-    from ..book.gradebook import PART_COLUMNS
-    from ...i18n import _, current_language, speaking
     parts = row.get("_part_text", {})
     header = row["_feedback_text"]
     for text in parts.values():
@@ -277,7 +279,6 @@ def results(row: dict) -> dict:
 def run(root=None) -> int:
     """``run_autograder``: grade the submission under ``root`` (default ``$DHLAB_AUTOGRADER_ROOT`` or
     ``/autograder``) and write its results.json; 1 (and no results file) on an autograder failure."""
-    from ..run.reaper import become_subreaper, end_descendants
     root = Path(root or os.environ.get(ROOT_ENV) or "/autograder")
     started = time.monotonic()
     become_subreaper()                      # a daemon the notebook starts stays our descendant
@@ -293,7 +294,6 @@ def run(root=None) -> int:
         return 1
     except Exception as e:                                 # our failure, never the student's zero
         _quietly(end_descendants)
-        import traceback
         traceback.print_exc(file=sys.stdout)
         print(f"dhlab autograder: not graded (grader error {type(e).__name__}: {e}); rerun it once fixed.", flush=True)
         return 1
@@ -317,7 +317,6 @@ def _quietly(step) -> None:
 
 def main(argv=None) -> int:
     """``python -m dhlab.grading.export.gradescope run [--root DIR]`` (what run_autograder calls)."""
-    import argparse
     parser = argparse.ArgumentParser(prog="python -m dhlab.grading.export.gradescope",
                                      description=run.__doc__.split(":")[0])
     parser.add_argument("command", choices=["run"])

@@ -35,6 +35,9 @@ from __future__ import annotations
 from pathlib import Path, PurePosixPath
 
 from ...validation import DHLabError
+from ..book.csvsafe import csv_text
+from ..book.gradebook import write_atomic
+from ..release.roster import checked_id, csv_rows, id_column_index, look_alikes
 
 __all__ = ["read_roster_rows", "match", "not_graded", "canvas_rows", "moodle_rows", "write", "CANVAS_COLUMNS"]
 
@@ -46,7 +49,6 @@ GRADE_COLUMNS = {"canvas": [len(CANVAS_COLUMNS)], "moodle": [1]}    # the numeri
 def read_roster_rows(path, id_column=None) -> tuple:
     """(the id column's name, {id: the roster row as a dict}), with clear errors (no such file, no
     id column, an empty or repeated id). Canvas's ``Points Possible`` row is not a student."""
-    from ..release.roster import checked_id, csv_rows, id_column_index, look_alikes
     path = Path(path)
     rows = csv_rows(path)
     if len(rows) < 2:
@@ -159,6 +161,4 @@ def write(path, rows, numeric_columns=()) -> None:
     """A CSV file for Excel and the LMS: UTF-8 with a BOM, comma-separated, every field quoted
     only when it must be, no cell a formula (``numeric_columns``: the indexes of the grade
     columns, whose numbers are kept; see :mod:`dhlab.grading.book.csvsafe`)."""
-    from ..book.csvsafe import csv_text
-    from ..book.gradebook import write_atomic
     write_atomic(path, csv_text(rows, numeric_columns))

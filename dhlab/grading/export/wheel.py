@@ -12,7 +12,10 @@ from __future__ import annotations
 import base64
 import hashlib
 import zipfile
+from importlib import metadata
 from pathlib import Path
+
+from ..run.isolation import package_dir
 
 __all__ = ["build_wheel", "REQUIRES", "SCRIPTS"]
 
@@ -25,8 +28,7 @@ _DATE = (2020, 1, 1, 0, 0, 0)           # fixed, so the same package gives the s
 
 def _version() -> str:
     try:
-        from importlib.metadata import version
-        return version("dhlab")
+        return metadata.version("dhlab")
     except Exception:                   # not installed as a distribution: a plain checkout
         return "0.0.0"
 
@@ -39,7 +41,6 @@ def _record_line(name: str, data: bytes) -> str:
 def build_wheel(folder, package=None) -> Path:
     """Write ``dhlab-<version>-py3-none-any.whl`` into ``folder`` from the package folder
     ``package`` (default: the installed dhlab); compiled files (``__pycache__``) are left out."""
-    from ..run.isolation import package_dir
     package = Path(package or package_dir())
     version = _version()
     info = f"dhlab-{version}.dist-info"

@@ -5,7 +5,9 @@
 * :mod:`~dhlab.grading.release.roster` — the roster's student ids, and a safe file name for each;
 * :mod:`~dhlab.grading.release.language` — each released notebook in its student's language;
 * :mod:`~dhlab.grading.release.generate` — the student notebook (package data, ``dhlab/grading/template/``)
-  made from the teacher's source notebook (``python -m dhlab.grading.release.generate``).
+  kept the course's, and made again from a solved notebook (``python -m dhlab.grading.release.generate``);
+* :mod:`~dhlab.grading.release.solutions` — ``dhlab-assign solutions``: the teacher's solved notebook,
+  computed (no file holds it), for the PUMA 560 or one student's own robot.
 """
 from __future__ import annotations
 

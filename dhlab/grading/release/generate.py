@@ -1,18 +1,24 @@
-"""Make the student notebook from the source (solutions) notebook, the way nbgrader does.
+"""The student notebook, and the solved notebook nbgrader calls the source, the way nbgrader makes them.
 
     python -m dhlab.grading.release.generate                      # in the course's repository: see below
-    python -m dhlab.grading.release.generate SOURCE -o STUDENT
-    python -m dhlab.grading.release.generate --check              # exit 1 if the student notebook is out of date
+    python -m dhlab.grading.release.generate SOLVED               # ... the student notebook from SOLVED
+    python -m dhlab.grading.release.generate SOURCE -o STUDENT    # a teacher's own source notebook
+    python -m dhlab.grading.release.generate --solved OUT         # the solved notebook, computed
+    python -m dhlab.grading.release.generate --check              # exit 1 if a student notebook is out of date
 
-**The teacher's source notebook, with the solutions, is not in the package** (students install
-it): it is ``tools/teacher/08_puma_assignment.ipynb`` in the course's repository, outside
-``notebooks/``, so students never see it in the course's file browser either (``make lab``).
-Run from that repository (its top folder or below), the defaults are the course's own files
-(:func:`checkout`): the source is that notebook, and the student notebook is written twice, as
-``notebooks/08_puma_assignment.ipynb`` and as ``dhlab/grading/template/08_puma_assignment.ipynb``
-(:data:`TEMPLATE`, package data: what ``dhlab-assign`` starts from). Elsewhere name the source
-(``SOURCE``, or ``--source`` of ``dhlab-grade``, whose self-check runs it): :func:`find_source`
-says where to get it when it is missing.
+**No file of the course holds the teacher's solutions** (students install the course by cloning
+its repository): the course keeps the student notebook, ``notebooks/08_puma_assignment.ipynb``,
+and its copy in the package, ``dhlab/grading/template/08_puma_assignment.ipynb`` (:data:`TEMPLATE`:
+what ``dhlab-assign`` starts from). The solved notebook is computed from the reference robot
+when it is needed (:func:`dhlab.assignment.solution.solved_notebook`; :func:`solution_notebook`):
+by the grader's self-check, by ``dhlab-assign solutions``, by ``make notebooks``. Run from the
+course's repository (its top folder or below: :func:`checkout`), this module writes the student
+notebook twice, the course's and the package's copy (:data:`CHECKOUT_STUDENTS`): from ``SOLVED``
+when given (``make notebooks`` passes the solved notebook it has just executed, so the figure and
+tables the student sees are what the code draws), else from the course's own notebook (its text
+edited by hand: the copies are made equal and tidy). ``--check`` says whether both copies are what
+that run would write. A teacher who keeps their own source notebook names it (``SOURCE -o
+STUDENT``; ``--source`` of ``dhlab-grade``); :func:`find_source` reads it, or computes the PUMA's.
 
 The source notebook is marked exactly as for nbgrader, so a teacher who uses
 nbgrader can drop it into ``source/<assignment>/`` and run ``nbgrader
@@ -49,20 +55,26 @@ For the same result with nbgrader, set in ``nbgrader_config.py``::
 from __future__ import annotations
 
 import argparse
+import atexit
 import copy
 import json
 import re
+import shutil
 import sys
+import tempfile
 from pathlib import Path
 
+import nbformat
+
+from ...assignment.solution import ANSWER_MARKER, solved_notebook
 from ...errors import DHLabError
 from ...i18n import N_, _
 
 __all__ = ["CODE_STUB", "TEXT_STUB", "GenerateError", "SourceMissing", "clear_solutions", "remove_hidden_tests",
-           "check_metadata", "student_cell", "student_notebook", "generate", "main",
-           "NOTEBOOK", "TEMPLATE", "CHECKOUT_SOURCE", "CHECKOUT_STUDENTS", "checkout", "find_source"]
+           "check_metadata", "student_cell", "student_notebook", "generate", "main", "solution_notebook",
+           "NOTEBOOK", "TEMPLATE", "CHECKOUT_STUDENTS", "checkout", "find_source", "course_solved"]
 
-CODE_STUB = "# YOUR CODE HERE"
+CODE_STUB = ANSWER_MARKER              # what the solved notebook's solution becomes (and where it goes back)
 TEXT_STUB = "YOUR ANSWER HERE"
 BEGIN_SOLUTION, END_SOLUTION = "BEGIN SOLUTION", "END SOLUTION"
 BEGIN_HIDDEN, END_HIDDEN = "BEGIN HIDDEN TESTS", "END HIDDEN TESTS"
@@ -75,15 +87,11 @@ NBGRADER_KEYS = {"grade", "solution", "locked", "task", "grade_id", "points", "s
 NOTEBOOK = "08_puma_assignment.ipynb"
 # the student notebook, shipped with the package (generated; equal to the course's notebooks/08_…)
 TEMPLATE = Path(__file__).resolve().parents[1] / "template" / NOTEBOOK     # dhlab/grading/template/
-# in the course's repository, from its top folder: the teacher's source notebook (with the solutions)
-# and where the student notebook made from it goes (the course's notebook, the package's copy)
-CHECKOUT_SOURCE = Path("tools") / "teacher" / NOTEBOOK
+# in the course's repository, from its top folder: the student notebook (the course's, edited by
+# hand) and the package's copy of it, both written by this module
 CHECKOUT_STUDENTS = (Path("notebooks") / NOTEBOOK, Path("dhlab") / "grading" / "template" / NOTEBOOK)
-WHERE_TO_GET = N_("The teacher's source notebook (the assignment with its solutions) is not installed with dhlab, "
-                "so that students never get it: it is {path} in the course's repository. Run this from a clone "
-                "of the repository (git clone the course, then run from its folder), or give its path "
-                "(dhlab-grade … --source PATH; python -m dhlab.grading.release.generate PATH -o STUDENT.ipynb): a "
-                "teacher may keep a copy anywhere students cannot read it.")
+NO_SOURCE = N_("Leave --source out to use the solution dhlab computes for the PUMA 560 "
+               "(dhlab-assign solutions OUT.ipynb writes it to a file).")
 
 
 class GenerateError(ValueError):
@@ -91,28 +99,51 @@ class GenerateError(ValueError):
 
 
 class SourceMissing(DHLabError):
-    """The teacher's source notebook cannot be found (the message says where to get it)."""
+    """The teacher's own source notebook (``--source``) is not there (the message says what to do)."""
 
 
 def checkout(start=None):
     """The top folder of the course's repository that holds ``start`` (default: the current folder),
-    found by its teacher's notebook (:data:`CHECKOUT_SOURCE`); None outside a checkout."""
+    found by its two student notebooks (:data:`CHECKOUT_STUDENTS`); None outside a checkout."""
     here = Path(start if start is not None else Path.cwd()).resolve()
-    return next((folder for folder in (here, *here.parents) if (folder / CHECKOUT_SOURCE).is_file()), None)
+    return next((folder for folder in (here, *here.parents)
+                 if all((folder / path).is_file() for path in CHECKOUT_STUDENTS)), None)
+
+
+def _read(path) -> dict:
+    return json.loads(Path(path).read_text(encoding="utf-8"))
+
+
+def course_solved(top=None) -> dict:
+    """The solved notebook of the course's student notebook (the checkout ``top``'s, else the
+    package's :data:`TEMPLATE`), for the PUMA 560: computed, never stored."""
+    return solved_notebook(_read(top / CHECKOUT_STUDENTS[0] if top is not None else TEMPLATE))
+
+
+def _given(path) -> Path:
+    """A teacher's own source notebook, which must be there (:class:`SourceMissing` saying what to do)."""
+    if not Path(path).is_file():
+        raise SourceMissing(_("no notebook at {path!r}.").format(path=str(path)) + " " + _(NO_SOURCE))
+    return Path(path)
+
+
+def solution_notebook(path=None) -> dict:
+    """The teacher's solution: the source notebook at ``path`` when given (:class:`SourceMissing`
+    when there is none), else the one computed for the PUMA 560 (:func:`course_solved`)."""
+    return course_solved() if path is None else _read(_given(path))
 
 
 def find_source(path=None) -> Path:
-    """The teacher's source notebook: ``path`` when given, else the checkout's (run from the course's
-    repository); :class:`SourceMissing`, saying where to get it, when there is none."""
+    """The teacher's solution as a file: ``path`` when given (:class:`SourceMissing` when there is
+    none), else the computed one (:func:`solution_notebook`) written to a fresh temporary folder,
+    removed when the process ends."""
     if path is not None:
-        if not Path(path).is_file():
-            raise SourceMissing(_("no notebook at {path!r}.").format(path=str(path)) + " "
-                                + _(WHERE_TO_GET).format(path=CHECKOUT_SOURCE))
-        return Path(path)
-    top = checkout()
-    if top is None:
-        raise SourceMissing(_(WHERE_TO_GET).format(path=CHECKOUT_SOURCE))
-    return top / CHECKOUT_SOURCE
+        return _given(path)
+    folder = Path(tempfile.mkdtemp(prefix="dhlab-solution-"))
+    atexit.register(shutil.rmtree, folder, True)
+    written = folder / NOTEBOOK
+    written.write_text(_dumps(solution_notebook()), encoding="utf-8")
+    return written
 
 
 def _source(cell) -> str:
@@ -225,13 +256,13 @@ def student_notebook(nb: dict) -> dict:
 
 def _dumps(nb: dict) -> str:
     """The file text, as nbformat writes it (so a generated notebook is byte-stable)."""
-    import nbformat
     return nbformat.writes(nbformat.from_dict(nb))
 
 
 def generate(source, student, check: bool = False) -> bool:
-    """Write the student notebook (or, with ``check``, only compare). True if it is up to date."""
-    nb = json.loads(Path(source).read_text(encoding="utf-8"))
+    """Write the student notebook made from the solved notebook ``source`` (a path or a notebook
+    dict); with ``check``, only compare. True if it is up to date."""
+    nb = source if isinstance(source, dict) else _read(source)
     text = _dumps(student_notebook(nb))
     student = Path(student)
     current = student.read_text(encoding="utf-8") if student.exists() else None
@@ -245,27 +276,31 @@ def generate(source, student, check: bool = False) -> bool:
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("source", nargs="?", type=Path, default=None,
-                        help=f"the teacher's source notebook (default: {CHECKOUT_SOURCE} of the course's "
-                             "repository, when run from it)")
+                        help="a solved (source) notebook (default: the course's student notebook, solved for "
+                             "the PUMA 560, when run from the course's repository)")
     parser.add_argument("-o", "--output", type=Path, default=None,
-                        help="the student notebook (default, for the course's source: "
-                             f"{' and '.join(map(str, CHECKOUT_STUDENTS))}; required for any other source)")
+                        help="the student notebook (default, in the course's repository: "
+                             f"{' and '.join(map(str, CHECKOUT_STUDENTS))})")
+    parser.add_argument("--solved", type=Path, default=None, metavar="OUT",
+                        help="write the solved notebook to OUT instead (computed; nothing else is written)")
     parser.add_argument("--check", action="store_true", help="only check that the student notebook is up to date")
     args = parser.parse_args(argv)
-    top = checkout() if args.source is None else None
+    top = checkout()
+    if args.solved is not None:
+        args.solved.write_text(_dumps(course_solved(top)), encoding="utf-8")
+        print(f"{args.solved} written (the solutions: never hand it to students)")
+        return 0
     if args.output is None and top is None:
-        if args.source is None:
-            print(f"generate: {_(WHERE_TO_GET).format(path=CHECKOUT_SOURCE)}", file=sys.stderr)
-            return 2
-        parser.error("give -o STUDENT.ipynb for a source other than the course's")
-    source = args.source or top / CHECKOUT_SOURCE
+        print("generate: outside the course's repository, give -o STUDENT.ipynb (or --solved OUT)", file=sys.stderr)
+        return 2
+    source = args.source if args.source is not None else course_solved(top)
     outputs = [args.output] if args.output else [top / path for path in CHECKOUT_STUDENTS]
     failed = 0
     for output in outputs:
         try:
             ok = generate(source, output, check=args.check)
         except GenerateError as e:
-            print(f"{source}: {e}", file=sys.stderr)
+            print(f"{args.source or CHECKOUT_STUDENTS[0]}: {e}", file=sys.stderr)
             return 2
         if args.check and not ok:
             print(f"{output} is out of date: run python -m dhlab.grading.release.generate", file=sys.stderr)

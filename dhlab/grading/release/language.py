@@ -24,9 +24,9 @@ import re
 from pathlib import Path
 
 from ...assignment import variants as V
+from ...assignment.family import spec
 from ...assignment.notebook_cells import apply_rules, formula_rules
-from ...i18n import LANGUAGES, set_language
-from ...i18n import _, checked_language, default_language, speaking  # noqa: F401  (part of this module's API)
+from ...i18n import LANGUAGES, _, checked_language, default_language, set_language, speaking  # noqa: F401  (part of this module's API)
 
 __all__ = ["LANGUAGE_COLUMNS", "checked_language", "roster_languages", "in_language", "spanish_texts",
            "in_spanish", "mark_language", "notebook_language", "raw_notebook_language", "default_language",
@@ -116,7 +116,6 @@ def own_robot_text_es(text: str, robot, name: str) -> str:
 def in_spanish(released: dict, template: dict, record: dict, notes: set) -> dict:
     """The English released notebook ``released`` (made from ``template`` for ``record``) in
     Spanish: each markdown cell from the catalog, changed as the variant changed the English."""
-    from ...assignment.family import spec
     robot = V.robot_of_variant(V.Variant.from_dict(record["variant"]))
     name = spec(record["variant"]["family"]).name
     spanish = spanish_texts(template)

@@ -3,6 +3,10 @@
     dhlab-assign release ROSTER.csv -o release/ [--family puma560|kr5,ur5|all]
                          [--secret-file dhlab-secret.key] [--id-column id] [--template NOTEBOOK] [--figures]
                          [--language en|es]
+    dhlab-assign solutions OUT.ipynb [--student ID --release release/]     # the teacher's solved notebook
+
+The second command writes the solutions, computed, for the PUMA 560 or one student's own robot
+(:mod:`dhlab.grading.release.solutions`): no file of the course holds them.
 
 For every row of the roster (a CSV file with a header; the id column is ``id``,
 ``student_id``, ``student``, ``username`` or ``login`` — in Spanish ``identificador``,
@@ -50,9 +54,12 @@ from pathlib import Path, PurePosixPath
 
 from ...assignment import variants as V
 from ...assignment.notebook_cells import SEAM_CELL_ID, prepare_submission, release_notebook, seam_source
+from ...i18n import _, language_option, set_language
 from ...validation import DHLabError
-from . import generate
-from ...i18n import _, language_option
+from ..book.csvsafe import csv_text, restored
+from ..book.gradebook import write_atomic
+from ..options import DEFAULT_SECRET_FILE, shared
+from . import generate, solutions
 from .language import default_language, in_language, in_spanish, mark_language, roster_languages
 from .roster import ID_COLUMNS, checked_id, csv_rows, look_alikes, read_roster, safe_filename  # noqa: F401  (API)
 
@@ -61,7 +68,6 @@ __all__ = ["read_roster", "checked_id", "look_alikes", "previous_release", "safe
            "load_teacher_records", "submission_variant", "prepare_submission"]
 
 TEMPLATE = generate.TEMPLATE          # the student notebook, package data (no solutions in it)
-DEFAULT_SECRET_FILE = Path("dhlab-secret.key")
 
 
 # --- the notebook ------------------------------------------------------------------------------------
@@ -152,7 +158,6 @@ def previous_release(out: Path, secret: bytes) -> tuple:
 
 def _manifest_rows(path) -> list:
     """The rows of a manifest this module wrote (dicts; [] when there is none), cells unescaped."""
-    from ..book.csvsafe import restored
     try:
         with open(path, newline="", encoding="utf-8-sig") as f:
             return [{k: restored(v) for k, v in row.items() if k is not None} for row in csv.DictReader(f)]
@@ -204,8 +209,6 @@ def _write_teacher_records(out: Path, teacher: dict, manifest: list) -> None:
     """``_teacher/variants.json`` and ``_teacher/manifest.csv``, each written atomically (a
     stopped release leaves the old file or the new one). The manifest is for Excel: UTF-8 with
     a BOM, every cell text and escaped when it starts like a formula (an id ``=1+2``)."""
-    from ..book.csvsafe import csv_text
-    from ..book.gradebook import write_atomic
     table = [MANIFEST_COLUMNS] + [[row.get(c, "") for c in MANIFEST_COLUMNS] for row in manifest]
     write_atomic(out / "_teacher" / "variants.json",
                  json.dumps(teacher, sort_keys=True, indent=1, ensure_ascii=False) + "\n")
@@ -262,7 +265,6 @@ def main(argv=None) -> int:
     """``dhlab-assign release ROSTER.csv -o OUT`` (see the module). Returns the exit code. The command
     speaks the teacher's language (``--language``, else ``DHLAB_LANGUAGE``), which is also the
     notebooks' language where the roster has no language column."""
-    from ...i18n import set_language
     argv = sys.argv[1:] if argv is None else list(argv)
     try:
         previous = set_language(language_option(argv))
@@ -279,24 +281,25 @@ def _main(argv) -> int:
     parser = argparse.ArgumentParser(prog="dhlab-assign", description=_(
         "Release the DH assignment: one personal robot and notebook per student."))
     sub = parser.add_subparsers(dest="command", required=True)
-    rel = sub.add_parser("release", help=_("write one notebook per student of a roster"))
+    options = shared(secret=_("the teacher's secret (default {file}, made when missing)").format(
+                         file=DEFAULT_SECRET_FILE),
+                     language=_("the notebooks' language, en or es, where the roster has no 'language' (or 'idioma') "
+                                "column; also this command's (default: DHLAB_LANGUAGE, else en)"))
+    rel = sub.add_parser("release", help=_("write one notebook per student of a roster"), parents=[options])
     rel.add_argument("roster", help=_("CSV file with a header and one row per student"))
     rel.add_argument("-o", "--output", required=True, help=_("folder for the notebooks"))
     rel.add_argument("--family", default="puma560",
                      help=_("robot(s) to draw from: a key, a comma-separated list, or 'all' (default puma560)"))
-    rel.add_argument("--secret-file", default=None,
-                     help=_("the teacher's secret (default {file}, made when missing)").format(
-                         file=DEFAULT_SECRET_FILE))
     rel.add_argument("--id-column", default=None,
                      help=_("the roster's id column (default: {names})").format(names=", ".join(ID_COLUMNS)))
     rel.add_argument("--template", default=str(TEMPLATE), help=_("the student notebook to start from"))
     rel.add_argument("--figures", action="store_true",
                      help=_("store the robot's picture in each notebook (about 0.5 s per student more; "
                             "without it the picture is drawn when the student runs the cell)"))
-    rel.add_argument("--language", default=None,
-                     help=_("the notebooks' language, en or es, where the roster has no 'language' (or 'idioma') "
-                            "column; also this command's (default: DHLAB_LANGUAGE, else en)"))
+    solutions.add_parser(sub)
     args = parser.parse_args(argv)
+    if args.command == "solutions":
+        return _solutions(args)
     try:
         secret = _secret(args.secret_file)
         rows = release(args.roster, args.output, secret, args.family, args.id_column, args.template,
@@ -310,6 +313,17 @@ def _main(argv) -> int:
     print(_("dhlab-assign: {count} notebooks in {folder} ({families}; {languages}); the teacher's record is in "
             "{record}").format(count=len(rows), folder=args.output, families=", ".join(families), languages=counts,
                                record=Path(args.output) / "_teacher"))
+    return 0
+
+
+def _solutions(args) -> int:
+    """``dhlab-assign solutions OUT.ipynb …`` (:mod:`dhlab.grading.release.solutions`)."""
+    try:
+        out = solutions.run(args, TEMPLATE)
+    except DHLabError as exc:
+        print(f"dhlab-assign: error: {exc}", file=sys.stderr)
+        return 2
+    print(_("dhlab-assign: the solutions are in {file}: never hand them to students.").format(file=out))
     return 0
 
 

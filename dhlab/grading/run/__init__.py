@@ -5,8 +5,10 @@
 * :mod:`~dhlab.grading.run.launch` — one runner process per submission
   (:func:`~dhlab.grading.run.launch.run_submission`);
 * :mod:`~dhlab.grading.run.runner` — that process: one notebook in a fresh kernel, its answers as plain data
-  (started as a script, it reads only its neighbours ``notebook_code.py``, ``sandbox.py``, ``cgroups.py`` and
-  ``dhlab/assignment/encode.py``, never the whole package);
+  (started as a script, it reads only its neighbours ``kernel.py``, ``read_answers.py``, ``notebook_code.py``,
+  ``sandbox.py``, ``cgroups.py`` and ``dhlab/assignment/encode.py``, never the whole package);
+  :mod:`~dhlab.grading.run.kernel` — the student's kernel, driven cell by cell;
+  :mod:`~dhlab.grading.run.read_answers` — the answers written as JSON by the kernel, and read back;
 * :mod:`~dhlab.grading.run.sandbox` — the kernel's own limits and, as root, its private root;
   :mod:`~dhlab.grading.run.cgroups` — a control group per submission;
 * :mod:`~dhlab.grading.run.isolation` — the kernels' users, ending every process a submission started, and

@@ -17,10 +17,16 @@ from __future__ import annotations
 
 import fcntl
 import os
+import pwd
 import shutil
+import signal
 import sys
 import tempfile
 from pathlib import Path
+
+from .cgroups import remove_leftovers
+from .isolation import MAX_USERS, USER_PREFIX, claim, kernels_parent, kill_user, pids_of
+from .sandbox import unmount_below
 
 __all__ = ["hold", "clean", "main", "LEFTOVERS", "LOCK_NAME"]
 
@@ -30,7 +36,6 @@ LOCK_NAME = "dhlab-grade.lock"
 
 def _folders() -> list:
     """The temporary folders a grader uses: ``TMPDIR`` and where the kernels' folders go."""
-    from .isolation import kernels_parent
     out = []
     for folder in (Path(tempfile.gettempdir()), kernels_parent() if os.geteuid() == 0 else None):
         if folder is not None and folder.is_dir() and folder.resolve() not in [f.resolve() for f in out]:
@@ -68,8 +73,6 @@ def _leftovers(folder: Path) -> list:
 
 def _end_kernels() -> list:
     """As root: end the processes of grading users no running grader holds (their grader was killed)."""
-    import pwd
-    from .isolation import MAX_USERS, USER_PREFIX, claim, kill_user, pids_of
     ended = []
     for k in range(1, MAX_USERS + 1):
         try:
@@ -91,7 +94,6 @@ def _end_kernels() -> list:
 def _end_processes(folders) -> int:
     """End the processes still running from the leftover ``folders`` (a killed grader's runners and
     kernels: their command lines name their copy, their result file or their kernel's folder)."""
-    import signal
     marks = [str(f).encode() for f in folders]
     ended = 0
     for entry in os.scandir("/proc"):
@@ -123,7 +125,6 @@ def clean() -> tuple:
             _end_processes(_leftovers(folder))
             for path in _leftovers(folder):
                 if os.geteuid() == 0:             # a kernel's folder is a tmpfs while it runs
-                    from .sandbox import unmount_below
                     unmount_below(str(path))
                 shutil.rmtree(path, ignore_errors=True)
                 if not path.exists():
@@ -132,7 +133,6 @@ def clean() -> tuple:
             os.close(fd)
     ended = _end_kernels() if os.geteuid() == 0 and not busy else []
     if os.geteuid() == 0 and not busy:            # the control groups of killed runners (dhlab.grading.run.cgroups)
-        from .cgroups import remove_leftovers
         removed += [Path(folder) for folder in remove_leftovers()]
     return removed, busy, ended
 

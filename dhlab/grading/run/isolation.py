@@ -47,6 +47,9 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from .cgroups import remove_leftovers
+from .sandbox import mount_tmpfs, unmount
+
 __all__ = ["Isolation", "setup", "claim", "kill_user", "kill_token", "fingerprint", "file_digests", "changed_files",
            "package_dir", "pids_of", "USER_PREFIX", "kernels_parent", "blocked_on_the_way", "KERNELS_DIR_ENV"]
 
@@ -128,7 +131,6 @@ class Isolation:
         if user is not None:
             os.chown(folder, user[1], user[2])
             if os.geteuid() == 0:
-                from .sandbox import mount_tmpfs
                 try:
                     mount_tmpfs(str(folder), DISK_MB, user[1], user[2])
                 except OSError:
@@ -141,10 +143,8 @@ class Isolation:
             kill_user(user[1])
         kill_token(token)
         if token and os.geteuid() == 0:           # the runner removes its group; a killed runner cannot
-            from .cgroups import remove_leftovers
             remove_leftovers(f"sub-{token}")
         if os.geteuid() == 0:                     # its tmpfs (Isolation.workdir), if it has one
-            from .sandbox import unmount
             unmount(str(workdir))
         shutil.rmtree(workdir, ignore_errors=True)
         shutil.rmtree(f"{workdir}.root", ignore_errors=True)    # where its private root was mounted

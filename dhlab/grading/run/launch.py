@@ -21,6 +21,9 @@ import tempfile
 import threading
 from pathlib import Path
 
+from .isolation import setup
+from .runner import RUNNER
+
 __all__ = ["run_submission", "stop_all", "allow_runs", "Stopped"]
 
 _RUNNING = {}                        # pid -> the Popen of every runner running now
@@ -72,7 +75,6 @@ def run_submission(staged, options, iso=None, retries: int = 2) -> dict:
     running, at most ``retries`` times. Afterwards every process the submission started
     is ended and its folder removed.
     """
-    from .isolation import setup
     if STOPPING.is_set():
         raise Stopped(staged.file)
     iso = iso or setup(1, "none")
@@ -101,7 +103,6 @@ def run_submission(staged, options, iso=None, retries: int = 2) -> dict:
 
 def _run_once(copy: Path, options, skip, user=None, workdir=None, token="") -> tuple:
     """(result dict, the cell that was running when the runner stopped or None)."""
-    from .runner import RUNNER
     with tempfile.TemporaryDirectory(prefix="dhlab-grade-run-") as tmp:
         tmp = Path(tmp)
         result, pid_file, log = tmp / "result.json", tmp / "kernel.pid", tmp / "runner.log"

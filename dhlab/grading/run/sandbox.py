@@ -43,9 +43,11 @@ it, until the buffer exhausts the memory limit.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import ctypes
 import ctypes.util
 import glob
+import importlib.util
 import os
 import resource
 import secrets
@@ -97,6 +99,8 @@ def apply_limits(memory_mb: float | None, cpu_seconds: float | None, file_mb: fl
 
 def limit_output(max_bytes: int) -> None:
     """Make the kernel's stdout/stderr drop a cell's output beyond ``max_bytes`` characters."""
+    # lazy: this runs in the kernel's launcher after the limits are lowered; the runner and the
+    # grader import this module for its limits and names, and never need ipykernel
     from ipykernel import iostream
 
     write = iostream.OutStream.write
@@ -129,9 +133,8 @@ def _keep_no_output_history() -> None:
     """IPython 9 keeps every string a cell prints in memory (``history_manager.outputs``, through
     ``InteractiveShell._tee``), even past our cap: a cell printing in a loop would fill the memory
     limit with output nobody reads. The grader needs no output history, so none is kept."""
-    import contextlib
     try:
-        from IPython.core.interactiveshell import InteractiveShell
+        from IPython.core.interactiveshell import InteractiveShell  # lazy: as ipykernel above
     except ImportError:
         return
     if hasattr(InteractiveShell, "_tee"):
@@ -187,7 +190,6 @@ def _needed_paths() -> list:
     """What the kernel must read beyond the system: the Python installation, the environment
     (a virtual environment's folder) and dhlab's own folder — never the folder around it (an
     editable install's checkout holds the notebooks and tests, a teacher's may hold more)."""
-    import importlib.util
     # a base installation's programs and libraries, not its whole folder (a conda base holds every
     # environment, its package cache and .condarc); a virtual environment is the course's own: whole
     paths = {os.path.join(prefix, sub) for prefix in {sys.base_prefix, sys.base_exec_prefix}
@@ -410,14 +412,13 @@ def main(argv=None) -> None:
     # started as a script, this folder is sys.path[0]; a kernel started with -m has '' (its cwd)
     here = os.path.dirname(os.path.abspath(__file__))
     sys.path[:] = [""] + [p for p in sys.path if p and os.path.abspath(p) != here]
-    from ipykernel import kernelapp
+    from ipykernel import kernelapp  # lazy: only now, under the limits and with this folder off sys.path
     sys.argv = [sys.argv[0], *rest]
     kernelapp.launch_new_instance()
 
 
 def _probe(missing) -> None:
     """Exit 0 when the sandbox user can run the kernel and cannot write dhlab; say what is missing."""
-    import importlib.util
     spec = importlib.util.find_spec("dhlab")
     if spec is None:
         sys.exit(f"dhlab does not import in the sandbox (Python {sys.executable}, path {sys.path})")

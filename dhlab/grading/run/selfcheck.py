@@ -5,9 +5,9 @@ will be started** — through the same runner, as the same unprivileged user, in
 namespace, with a working folder made the same way (hence the same ``TMPDIR``) and the same
 limits (``--memory-mb`` included) — and grades the teacher's solution (:func:`solution`: what a
 correct submission does, from ``import dhlab`` to the last answer), which must earn full marks.
-The solution is not installed with dhlab (students install it too): ``--source PATH``
-(``options.source``), else the course repository's ``tools/teacher/08_puma_assignment.ipynb`` when
-the grader runs from a clone of it (:func:`dhlab.grading.release.generate.find_source`).
+No file holds that solution (students install the course too): it is computed for the PUMA 560
+(:func:`dhlab.assignment.solution.solved_notebook`), or it is the teacher's own source notebook,
+``--source PATH`` (``options.source``).
 If it cannot, the grader stops with one message that says why (which user cannot enter which
 folder; or the memory limit, and a limit that worked) and what to do, and grades nothing: a
 machine problem must not become 300 rows of "grader error", nor a limit 300 zeros.
@@ -19,6 +19,7 @@ a teacher could act on.
 """
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import sys
@@ -26,7 +27,13 @@ import tempfile
 from pathlib import Path
 from types import SimpleNamespace
 
+from ...assignment.answers import parse_json
+from ...assignment.checks import check_all
 from ...i18n import _
+from ..release.generate import NOTEBOOK, SourceMissing, find_source, solution_notebook
+from .isolation import blocked_on_the_way, package_dir
+from .launch import run_submission
+from .staging import stage
 
 __all__ = ["SelfCheckError", "check", "solution"]
 
@@ -58,26 +65,30 @@ def check(iso, options) -> None:
     raise SelfCheckError(explain(iso, run))
 
 
-def solution(options) -> Path:
-    """The teacher's solution: a correct submission, run exactly as every submission will be
-    (``options.source``, else the course checkout's; :class:`SelfCheckError` saying where to get it)."""
-    from ..release.generate import SourceMissing, find_source
-    try:
-        return find_source(getattr(options, "source", None))
-    except SourceMissing as e:
-        raise SelfCheckError(_("The grader's self-check needs the teacher's solution, so nothing was graded.")
-                             + f" {e}") from None
+def solution(options, folder) -> Path:
+    """The teacher's solution as a file, a correct submission run exactly as every submission will
+    be: ``options.source`` when given (:class:`SelfCheckError` when it is not there; what it holds is
+    staged as a submission is), else the one computed for the PUMA 560, written into ``folder``."""
+    source = getattr(options, "source", None)
+    if source is not None:
+        try:
+            return find_source(source)
+        except SourceMissing as e:
+            raise SelfCheckError(_("The grader's self-check needs the teacher's solution, so nothing was graded.")
+                                 + f" {e}") from None
+    Path(folder).mkdir(mode=0o700, exist_ok=True)
+    written = Path(folder) / NOTEBOOK
+    written.write_text(json.dumps(solution_notebook(), ensure_ascii=False), encoding="utf-8")
+    return written
 
 
 def _grade_solution(iso, options, memory_mb) -> tuple:
     """(the runner's result, whether it ran without an error and earns full marks) for the
     solution notebook, copied as a submission is (:func:`dhlab.grading.run.staging.stage`)."""
-    from .launch import run_submission
-    from .staging import stage
-    source = solution(options)
     folder = Path(tempfile.mkdtemp(prefix="dhlab-grade-copies-"))     # where the real copies go
     os.chmod(folder, 0o700)
     try:
+        source = solution(options, folder / "solution")
         staged = stage(source, source.parent, folder, 0)
         if staged.copy is None:
             return {"grader_error": f"{source}: {staged.error}"}, False
@@ -91,8 +102,6 @@ def _grade_solution(iso, options, memory_mb) -> tuple:
 
 def _full_marks(run: dict) -> bool:
     """Whether the answers the kernel wrote earn full marks against the PUMA 560."""
-    from ...assignment.answers import parse_json
-    from ...assignment.checks import check_all
     try:
         report = check_all(parse_json(run.get("answers_json") or "{}"))
     except (ValueError, AttributeError, TypeError):
@@ -120,7 +129,6 @@ def memory_message(memory_mb, worked, run: dict) -> str:
 
 def explain(iso, run: dict) -> str:
     """One message: what failed, why (which user cannot reach which path), and what to do."""
-    from .isolation import blocked_on_the_way, package_dir
     what = _what_failed(run)
     user = iso.users[0] if iso.users else None
     who = f"user {user[0]} (uid {user[1]})" if user else f"the grader's own user (uid {os.geteuid()})"

@@ -32,9 +32,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ...i18n import _
-from .notebook_code import (NotebookError, check_notebook_bytes, code_cells_of, read_notebook_bytes,
-                            read_notebook_json)
 from ..release.language import notebook_language
+from .notebook_code import NotebookError, check_notebook_bytes, code_cells_of, read_notebook_bytes, read_notebook_json
 
 __all__ = ["Staged", "stage", "stage_all", "find_submissions"]
 

@@ -3,31 +3,25 @@
     python tests/data/submissions/make_submissions.py      # rewrites the .ipynb files here
 
 Each one is the generated student notebook with answers typed into its answer cells (the
-source notebook's solutions, a valid alternative DH assignment, or specific mistakes) and,
+teacher's solutions, computed by dhlab.assignment.solution, a valid alternative DH assignment, or
+specific mistakes) and,
 for the hostile ones, extra cells that raise, hang, flood, exhaust memory, kill processes
 or tamper with dhlab. Two are not notebooks at all. tests/grading/test_grading_runner.py grades
 them all and says what each must get.
 """
 import copy
 import json
-import re
 from pathlib import Path
 
 import nbformat
 
+from dhlab.assignment.solution import answers
+
 ROOT = Path(__file__).resolve().parents[3]
 OUT = ROOT / "tests/data/submissions"
 student = nbformat.read(ROOT / "notebooks/08_puma_assignment.ipynb", 4)
-source = nbformat.read(ROOT / "tools/teacher/08_puma_assignment.ipynb", 4)
-
-def solution_of(gid):
-    for c in source.cells:
-        if c.metadata.get("nbgrader", {}).get("grade_id") == gid:
-            m = re.search(r"### BEGIN SOLUTION\n(.*?)### END SOLUTION", c.source, re.S)
-            return m.group(1).rstrip("\n")
-    raise KeyError(gid)
-
-P1, P2, P3 = (solution_of(g) for g in ("part1_answers", "part2_answers", "part3_answers"))
+# the teacher's solutions of the PUMA 560: computed (no file of the course holds them)
+P1, P2, P3 = (answers()[g] for g in ("part1_answers", "part2_answers", "part3_answers"))
 
 def make(name, answers=None, extra=(), raw=None):
     """answers: {grade_id: code}; extra: [(after_grade_id, code)] cells inserted after that cell."""
