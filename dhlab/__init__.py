@@ -61,6 +61,7 @@ def __getattr__(name: str):
     """A lazily imported name (see ``_LAZY``), imported on first use and then kept;
     ``__version__`` is read from the installed package's metadata (pyproject.toml says it)."""
     if name == "__version__":
+        # here: only __version__ reads the installed metadata
         from importlib.metadata import PackageNotFoundError, version
         try:
             return version("dhlab")

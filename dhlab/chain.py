@@ -203,7 +203,7 @@ class Robot:
         i = as_index(i, "link index i", 1, self.n)
         link = self.links[i - 1]
         if q is None:
-            from .symbolic import exact
+            from .symbolic import exact  # lazy: symbolic pulls in sympy
             return exact(link.A(self.q_symbols[i - 1]))
         values = [0.0] * self.n
         values[i - 1] = one_value(q, i)
@@ -234,7 +234,7 @@ class Robot:
     # --- symbolic kinematics -------------------------------------------------------
     def link_matrices_sym(self):
         """The symbolic ^{i-1}A_i of every link, exact (degrees like 90° become π/2)."""
-        from .symbolic import exact
+        from .symbolic import exact  # lazy: symbolic pulls in sympy
         return [exact(link.A(s)) for link, s in zip(self.links, self.q_symbols)]
 
     def fk_sym(self, simplify: bool = False, timeout: float | None = 60.0):
@@ -246,9 +246,9 @@ class Robot:
         no limit) it stops with a DHLabError; the kernel's stop button
         (KeyboardInterrupt) stops it at any time.
         """
-        import sympy as sp
+        import sympy as sp  # lazy: sympy on first symbolic use
 
-        from .symbolic import chain_product, exact, simplify_chain
+        from .symbolic import chain_product, exact, simplify_chain  # lazy: symbolic pulls in sympy
         simplify = as_flag(simplify, "simplify")
         timeout = as_timeout(timeout)
         start = time.monotonic()                  # the timeout counts building the blocks too
@@ -266,12 +266,12 @@ class Robot:
 
     def compact(self, M):
         """``M`` in the slides' notation for this robot's joints: C1, S23, … (for reading)."""
-        from .symbolic import compact
+        from .symbolic import compact  # lazy: symbolic pulls in sympy
         return compact(M, self.q_symbols)
 
     def legend(self, M) -> str:
         """What the names in ``compact(M)`` stand for, e.g. 'C1 = cos(q1), S23 = sin(q2 + q3)'."""
-        from .symbolic import legend
+        from .symbolic import legend  # lazy: symbolic pulls in sympy
         return legend(M, self.q_symbols)
 
     def _sym_blocks(self):

@@ -155,9 +155,9 @@ class DHRobot(Robot):
     def _run_block(self, first: int, last: int):
         """A_first ··· A_last for revolute links whose α are 0 except the last one's:
         [Rz(φ_last)·Rx(α_last) | (Σ a_j cos φ_j, Σ a_j sin φ_j, Σ d_j)], φ_j the partial sums."""
-        import sympy as sp
+        import sympy as sp  # lazy: sympy on first symbolic use
 
-        from .symbolic import exact_angle, exact_length
+        from .symbolic import exact_angle, exact_length  # lazy: symbolic pulls in sympy
         phi, p = 0, sp.zeros(3, 1)
         for k in range(first, last + 1):
             link = self.links[k]

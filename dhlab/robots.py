@@ -28,7 +28,7 @@ __all__ = [
 def _symbol(name: str):
     """The sympy symbol of a length of a drawing (``l1`` …), so that ``fk_sym()`` prints like the slides.
     (sympy is imported here, when a robot is built, not when dhlab is imported.)"""
-    import sympy as sp
+    import sympy as sp  # lazy: sympy on first symbolic use
     return sp.Symbol(name)
 
 

@@ -62,7 +62,7 @@ def deg2rad(x):
     [0.0, 1.5708, 3.1416]
     """
     if is_expr(x) and x.free_symbols:      # a formula: sympy is loaded already, the result is exact
-        import sympy as sp
+        import sympy as sp  # lazy: sympy on first symbolic use
         return x * sp.pi / 180
     if has_angle_mark(x):
         raise DHLabError(_("deg2rad(x): x = {x} is already in radians (it was made by deg2rad()): do not convert "
@@ -81,7 +81,7 @@ def rad2deg(x):
     180.0
     """
     if is_expr(x) and x.free_symbols:      # a formula: sympy is loaded already, the result is exact
-        import sympy as sp
+        import sympy as sp  # lazy: sympy on first symbolic use
         return x * 180 / sp.pi
     values = _degrees_in(x, _("rad2deg(x): x (radians)"), 2 * math.pi)
     degrees = math.degrees(float(values)) if values.ndim == 0 else np.degrees(np.asarray(values, dtype=float))

@@ -171,17 +171,17 @@ class AssignmentRobot:
 
     def figure(self, **options):
         """The robot at home with its joint axes: see :func:`dhlab.assignment.pictures.axes_figure`."""
-        from .pictures import axes_figure
+        from .pictures import axes_figure  # lazy: loaded on first use (see above)
         return axes_figure(self, **options)
 
     def axes_table(self):
         """The table the student is given: a point and the drawn direction of each axis."""
-        from .tables import axes_table
+        from .tables import axes_table  # lazy: loaded on first use (see above)
         return axes_table(self)
 
     def points_table(self):
         """The link points at home, in the world frame (part 2)."""
-        from .tables import points_table
+        from .tables import points_table  # lazy: loaded on first use (see above)
         return points_table(self)
 
 

@@ -39,6 +39,7 @@ import html
 
 import numpy as np
 
+from .. import transforms
 from ..errors import DHLabError
 from ..i18n import _, current_language, speaking
 from ..validation import describe
@@ -198,10 +199,9 @@ class DHTransform:
 
     def matrix(self, q=None):
         """The 4x4 matrix: numeric at joint value ``q`` (radians), symbolic in q_i when omitted."""
-        from .. import transforms
         theta, d = self.z.theta, self.z.d
         if q is None:
-            import sympy as sp
+            import sympy as sp  # lazy: sympy on first symbolic use
 
             def exact(x):                   # 90 -> 90, 0.4318 -> 0.4318 (no 1.0 factors)
                 return sp.Integer(int(x)) if float(x).is_integer() else sp.Float(x)

@@ -46,7 +46,7 @@ class Note:
 
 def _new_axes(figsize=(7.5, 6.5), ncols: int = 1):
     """A course figure (a picture on a first Run All, inline or with ipympl) with 3D axes."""
-    from ..views.figures import new_figure
+    from ..views.figures import new_figure  # lazy: the views (matplotlib) on first picture
 
     fig = new_figure(figsize=figsize, layout=None)       # the layout is set by hand (3D axes)
     axes = [fig.add_subplot(1, ncols, c + 1, projection="3d") for c in range(ncols)]
@@ -71,7 +71,7 @@ def _square(ax, lo=PUMA_BOX[0], hi=PUMA_BOX[1]):
            xlabel="$x_0$ [m]", ylabel="$y_0$ [m]", zlabel="$z_0$ [m]")
     ax.set_box_aspect(np.array(hi) - np.array(lo))
     ax.view_init(elev=18, azim=-65)
-    from matplotlib.ticker import MaxNLocator
+    from matplotlib.ticker import MaxNLocator  # lazy: matplotlib on first picture
     for axis in (ax.xaxis, ax.yaxis, ax.zaxis):          # a few ticks: no labels piled up
         axis.set_major_locator(MaxNLocator(4))
 

@@ -8,8 +8,8 @@ reference solution of :mod:`dhlab.assignment.model` for a personal variant
 (``dhlab-assign solutions``, the grader's self-check, ``make notebooks``):
 
 * :func:`answers` — the three answer cells' code, written as a teacher would type it
-  (``n_links = 7``, ``joint_types = "RRRRRR"``, ``link_points = {...}``,
-  ``T1 = Tz(q1, 0) @ Tx(90, 0)`` …, ``chain = T1 @ … @ T6``);
+  (``n_links = …``, ``joint_types = "…"``, ``link_points = {...}``,
+  ``T1 = Tz(q1, d1) @ Tx(α1, a1)`` …, ``chain = T1 @ … @ Tn``: the example below);
 * :func:`solved_notebook` — a student notebook with them in its answer cells, between
   ``### BEGIN SOLUTION`` and ``### END SOLUTION``: the source notebook nbgrader expects (its
   ``generate_assignment``, like :mod:`dhlab.grading.release.generate`, turns it back into the

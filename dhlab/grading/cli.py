@@ -35,7 +35,7 @@ Every ``*.ipynb`` under SUBMISSIONS_DIR (any depth, e.g. nbgrader's
    file was removed since the last run is reported (and, with ``--resume``, kept, its status
    starting "removed since the last run"). One feedback file per submission goes to a
    folder beside it (``gradebook_feedback/``).
-7. **Ctrl-C** (:class:`_Interrupts`): the first starts no new submission and lets the running
+7. **Ctrl-C** (:class:`dhlab.grading.batch.Interrupts`): the first starts no new submission and lets the running
    ones finish; a second (or SIGTERM) stops them too, and their rows are not written.
    Then the copies and kernels' folders are removed and the grader prints the command that
    grades the rest (``… --resume``). Exit codes: 0 done, 2 usage, 3 stopped (dhlab changed),
@@ -73,13 +73,10 @@ from __future__ import annotations
 import argparse
 import concurrent.futures
 import functools
-import os
 import shlex
 import shutil
-import signal
 import sys
 import tempfile
-import threading
 import time
 from pathlib import Path
 
@@ -88,6 +85,7 @@ from pathlib import Path
 from ..assignment import checks  # noqa: F401
 from ..i18n import _, as_teacher
 from ..validation import DHLabError
+from .batch import Batch, Interrupts, grade_one
 from .book import grade_variants as GV
 from .book.gradebook import (
     COLUMNS,
@@ -96,158 +94,20 @@ from .book.gradebook import (
     assignment_cells,
     grade_again,
     read_csv,
-    write_atomic,
-    write_csv,
 )
 from .book.progress import Progress, summary
-from .book.submission_row import error_row, grade_submission
+from .book.submission_row import grade_submission
 from .export.command import main as export
 from .options import shared
 from .run import cleanup, selfcheck
 from .run.cleanup import main as clean
-from .run.isolation import changed_files, file_digests, setup
-from .run.launch import Stopped, allow_runs, run_submission, stop_all
+from .run.isolation import file_digests, setup
+from .run.launch import Stopped, allow_runs, run_submission
 from .run.staging import find_submissions, stage_all
 
 __all__ = ["main", "grade_submission", "find_submissions", "run_submission"]
 
 ASSIGNMENTS = ("puma",)
-
-
-class _Batch:
-    """The rows of one batch, the gradebook rewritten after each, and the package watch."""
-
-    def __init__(self, options, feedback_dir, rows, fingerprint_now, interrupts=None):
-        self.options, self.feedback_dir = options, feedback_dir
-        self.rows = {r["submission"]: r for r in rows}
-        self.lock = threading.Lock()
-        self.fingerprint = fingerprint_now
-        self.expected = fingerprint_now()
-        self.checked_ok = time.monotonic()          # when the package was last seen unchanged
-        self.stop = threading.Event()
-        self.refusal = ""
-        self.discarded = []
-        self.stopped = []                           # stopped by a second Ctrl-C: no row
-        self.interrupts = interrupts or _Interrupts()
-        self.written = False                        # the gradebook rewritten by this run yet
-
-    def package_unchanged(self) -> bool:
-        with self.lock:
-            if self.stop.is_set():
-                return False
-            now = self.fingerprint()
-            if now == self.expected:
-                self.checked_ok = time.monotonic()
-                return True
-            self.stop.set()
-            changed = changed_files(self.expected, now)
-            self.refusal = (f"dhlab's installed files changed during the batch ({', '.join(changed[:5])}"
-                            f"{', …' if len(changed) > 5 else ''}: did a submission write to them?). "
-                            "The grader stopped: reinstall dhlab (pip install --force-reinstall, or git checkout "
-                            "of the package), then run the same command with --resume.")
-            # every row that ran since the package was last seen unchanged cannot be trusted
-            for name, row in list(self.rows.items()):
-                if row.get("_started", -1) >= 0 and row["_ended"] > self.checked_ok:
-                    self.discarded.append(name)
-                    del self.rows[name]
-            self._write()
-            return False
-
-    def add(self, row, started, ended) -> None:
-        with self.lock:
-            text = row.pop("_feedback_text")
-            row.pop("_part_text", None)
-            if self.stop.is_set():
-                self.discarded.append(row["submission"])
-                return
-            row["_started"], row["_ended"] = started, ended
-            write_atomic(self.feedback_dir / row["feedback"], text)
-            self.rows[row["submission"]] = row
-            self._write()
-
-    def cannot_write(self, submission: str, exc: OSError) -> None:
-        """The gradebook or a feedback file could not be written (a full disk, a folder removed): the
-        grader stops as when dhlab changed (exit code 3); the rows written so far stay."""
-        with self.lock:
-            self.discarded.append(submission)
-            if not self.stop.is_set():
-                self.stop.set()
-                self.refusal = _("cannot write {file} ({why}). Free some space or fix the folder, then run the "
-                                 "same command with --resume.").format(file=exc.filename or self.options.output,
-                                                                        why=exc.strerror or exc)
-
-    def _write(self) -> None:
-        write_csv(self.options.output, self.rows.values(), self.options.columns)
-        self.written = True
-
-
-class _Interrupts:
-    """What Ctrl-C (SIGINT) does while the grader runs. The first: no new submission starts and the
-    running ones finish (before the batch: it stops at once); the second (or SIGTERM): the running
-    ones are stopped too (:func:`dhlab.grading.run.launch.stop_all`), and their rows are not written.
-    Either way the grader then removes its copies and kernels' folders, says how to resume, and
-    exits with 130. Before, one Ctrl-C graded to the end and a second turned correct notebooks
-    into zeros that ``--resume`` kept."""
-
-    SIGNALS = (signal.SIGINT, signal.SIGTERM)
-
-    def __init__(self):
-        self.count = 0
-        self.batch_running = False
-        self.previous = {}
-
-    def install(self) -> None:
-        """Handle the signals here, except one the grader was started ignoring (``nohup``, ``… &``)."""
-        if threading.current_thread() is threading.main_thread():     # (signals go to the main thread)
-            self.previous = {s: signal.signal(s, self.on_signal) for s in self.SIGNALS
-                             if signal.getsignal(s) != signal.SIG_IGN}
-
-    def uninstall(self) -> None:
-        for signum, handler in self.previous.items():
-            signal.signal(signum, handler if handler is not None else signal.SIG_DFL)
-        self.previous = {}
-
-    def on_signal(self, signum, frame) -> None:
-        self.count += 1
-        if self.count == 1 and signum == signal.SIGINT and self.batch_running:
-            self._say(_("Ctrl-C: no new submission starts; the running ones finish (Ctrl-C again to stop "
-                        "them now: they are then left for --resume)."))
-            return
-        stop_all()
-        self._say(_("Stopping: the running submissions are stopped; their rows are not written."))
-
-    @staticmethod
-    def _say(text: str) -> None:
-        """Write from a signal handler: os.write, since print may be in the middle of a line."""
-        try:
-            os.write(2, ("\n" + text + "\n").encode("utf-8", "replace"))
-        except OSError:
-            pass
-
-
-def _grade_one(batch, staged, iso):
-    """One task of the pool: check the package, grade, check again, keep the row. After a Ctrl-C
-    it starts nothing; a submission stopped by a second one has no row (``--resume`` grades it)."""
-    if batch.interrupts.count or not batch.package_unchanged():
-        return None
-    started = time.monotonic()
-    try:
-        row = grade_submission(staged, batch.options, iso)
-    except Stopped:
-        batch.stopped.append(staged.submission)
-        return None
-    except Exception as exc:                      # never stop the batch
-        row = error_row(staged, exc)
-    ended = time.monotonic()
-    if not batch.package_unchanged():
-        batch.discarded.append(staged.submission)
-        return None
-    try:
-        batch.add(row, started, ended)
-    except OSError as exc:                        # the disk, not the submission: stop, keep what is written
-        batch.cannot_write(row["submission"], exc)
-        return None
-    return row
 
 
 def main(argv=None) -> int:
@@ -267,7 +127,7 @@ def grade(argv) -> int:
 
 
 def _grade(argv) -> int:
-    interrupts = _Interrupts()                    # Ctrl-C from now on: see _Interrupts
+    interrupts = Interrupts()                    # Ctrl-C from now on: see batch.Interrupts
     allow_runs()
     interrupts.install()
     try:
@@ -388,7 +248,7 @@ def _run_batch(argv, options, folder, paths, feedback_dir, resolve, interrupts) 
         old = read_csv(options.output, options.columns)
         keep, removed, todo = _plan(old, staged, options.resume)
         # the old gradebook stays as it is until the first new row (a re-run stopped early loses nothing)
-        batch = _Batch(options, feedback_dir, keep + (removed if options.resume else []), file_digests, interrupts)
+        batch = Batch(options, feedback_dir, keep + (removed if options.resume else []), file_digests, interrupts)
         graded, elapsed = _grade_all(batch, todo, iso)
         if not interrupts.count and not batch.written:
             batch._write()                        # nothing new graded: the kept rows (and the removed ones)
@@ -409,7 +269,7 @@ def _grade_all(batch, todo, iso) -> tuple:
     graded = []
     batch.interrupts.batch_running = True
     with concurrent.futures.ThreadPoolExecutor(max_workers=iso.jobs) as pool:
-        futures = [pool.submit(_grade_one, batch, s, iso) for s in todo]
+        futures = [pool.submit(grade_one, batch, s, iso) for s in todo]
         for future in concurrent.futures.as_completed(futures):
             row = future.result()
             if row is not None:

@@ -48,8 +48,8 @@ def slider_keys():
 def _widget_class():
     """The widget class, made on first use (anywidget is imported only then)."""
     try:
-        import anywidget
-        import ipywidgets as widgets
+        import anywidget  # lazy: the notebook's own libraries, on first display
+        import ipywidgets as widgets  # lazy: the notebook's own libraries, on first display
     except ImportError:
         return None
 

@@ -250,7 +250,7 @@ class LiveFigure:
         if self._image is not None:
             self._image.value = self.png()
         if self._canvas is not None:
-            from .canvas import send_scene
+            from .canvas import send_scene  # here: canvas loads anywidget, which only the canvas backend needs
 
             self._seq += 1
             send_scene(self)
@@ -319,7 +319,7 @@ class LiveFigure:
 
     def _canvas_widget(self):
         if self._canvas is None:
-            from .canvas import CanvasWidget
+            from .canvas import CanvasWidget  # here: canvas loads anywidget, which only the canvas backend needs
 
             # set before the first draw: its draw_event handler sends the background to the widget
             self._canvas = CanvasWidget(self, css_size=self.css_size)

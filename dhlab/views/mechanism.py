@@ -111,7 +111,7 @@ class Mechanism:
     ``size`` is the robot's typical size (every solid is a fraction of it)."""
 
     def __init__(self, robot, size: float):
-        from matplotlib.colors import to_rgb
+        from matplotlib.colors import to_rgb  # lazy: matplotlib on first picture
         self.size = float(size)
         self.links = robot.numeric_links     # per link: (kind, axis, value, is_joint, sign), numbers
         self.has_tool = not np.allclose(np.asarray(robot.tool, dtype=float), np.eye(4))

@@ -269,7 +269,7 @@ class Panel(widgets.HBox):
         # widget manager (nbconvert to HTML, GitHub): they show the picture.
         bundle = super()._repr_mimebundle_(**kwargs)
         if isinstance(bundle, dict) and "image/png" not in bundle:
-            import base64
+            import base64  # here: only the PNG fallback encodes
 
             bundle["image/png"] = base64.b64encode(self.live.png()).decode("ascii")
         return bundle

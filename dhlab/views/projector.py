@@ -101,8 +101,8 @@ def _show(scale: float) -> None:
     """Show the stylesheet for ``scale`` as a ``<style>`` output (in a notebook only), and put
     it in place of the styles that earlier calls showed."""
     try:
-        from IPython import get_ipython
-        from IPython.display import display, update_display
+        from IPython import get_ipython  # lazy: the notebook's own libraries, on first display
+        from IPython.display import display, update_display  # lazy: the notebook's own libraries, on first display
     except ImportError:                       # no IPython: nothing to style
         return
     if get_ipython() is None:                 # plain Python (a script, the tests)

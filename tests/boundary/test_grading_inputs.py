@@ -73,14 +73,14 @@ def _not_graded(row):
 # --- a grader error is not the student's 0 -------------------------------------------------------
 
 def test_a_grader_exception_gives_a_row_that_says_not_graded(tmp_path):
-    row = cli.error_row(_staged(tmp_path), RuntimeError("Kernel died before replying to kernel_info"))
+    row = rows.error_row(_staged(tmp_path), RuntimeError("Kernel died before replying to kernel_info"))
     _not_graded(row)
     assert KERNEL_DIED in row["status"]
 
 
 def test_a_run_the_grader_failed_on_gives_a_row_that_says_not_graded(tmp_path, monkeypatch):
     monkeypatch.setattr(rows, "run_submission", lambda *a, **k: {"grader_error": KERNEL_DIED, "errors": []})
-    row = cli.grade_submission(_staged(tmp_path), _options())
+    row = rows.grade_submission(_staged(tmp_path), _options())
     _not_graded(row)
     assert row["status"] == f"grader error: {KERNEL_DIED} (not the student's fault: grade again with --resume)"
 
@@ -194,7 +194,7 @@ def test_a_syntax_error_in_the_part2_answer_cell_says_not_read(tmp_path, monkeyp
     raw = {name: ans.to_plain(ns[name]) for name in ans.ANSWER_NAMES if name in ns and name != "link_points"}
     run = {"errors": [[11, "SyntaxError", SYNTAX]], "answers_json": ans.encode_json(raw)}
     monkeypatch.setattr(rows, "run_submission", lambda *a, **k: dict(run))
-    row = cli.grade_submission(_staged(tmp_path), _options())
+    row = rows.grade_submission(_staged(tmp_path), _options())
     assert (row["score"], row["part2_links"]) == ("7", "0")
     assert row["status"] == ("error in cell 7 (SyntaxError on line 14: closing parenthesis '}' does not match "
                              "opening parenthesis '[' on line 11)")

@@ -22,6 +22,7 @@ from types import SimpleNamespace
 import pytest
 
 from dhlab.assignment import encode
+from dhlab.grading import batch as grading_batch
 from dhlab.grading import cli
 from dhlab.grading.book import gradebook
 from dhlab.grading.book import submission_row as rows
@@ -240,11 +241,11 @@ def test_a_gradebook_that_cannot_be_written_stops_the_batch_with_a_message(tmp_p
     """Item 5: the disk, not a submission: before, an OSError in a worker ended the grader with a traceback."""
     feedback = tmp_path / "feedback"
     feedback.write_text("a file where the feedback folder should be")
-    batch = cli._Batch(SimpleNamespace(output=tmp_path / "gradebook.csv", columns=gradebook.COLUMNS), feedback,
-                       [], lambda: "unchanged")
+    batch = grading_batch.Batch(SimpleNamespace(output=tmp_path / "gradebook.csv", columns=gradebook.COLUMNS),
+                                feedback, [], lambda: "unchanged")
     row = {"submission": "ana", "feedback": "ana.txt", "_feedback_text": "…", "score": "10", "status": "ok"}
-    monkeypatch.setattr(cli, "grade_submission", lambda *a, **k: dict(row))
-    assert cli._grade_one(batch, SimpleNamespace(submission="ana"), None) is None
+    monkeypatch.setattr(grading_batch, "grade_submission", lambda *a, **k: dict(row))
+    assert grading_batch.grade_one(batch, SimpleNamespace(submission="ana"), None) is None
     assert batch.refusal.startswith("cannot write ") and "--resume" in batch.refusal
     assert batch.discarded == ["ana"] and not batch.package_unchanged()        # nothing else starts
     assert cli._cannot_write(tmp_path) == "it is a folder" and cli._cannot_write(tmp_path / "new" / "gb.csv") == ""

@@ -104,11 +104,11 @@ def frame_panel(theta_deg=30.0, a=1.0, alpha_deg=45.0):
     """Sliders θ, a, α: the same three motions about the moving axes (solid triad,
     Rz(θ)·Tr(a,0,0)·Rx(α), the DH way) and about the fixed axes (dashed triad,
     Rx(α)·Tr(a,0,0)·Rz(θ)), both matrices live. Returns the panel (``.sliders``: θ, a, α)."""
-    import ipywidgets as widgets
+    import ipywidgets as widgets  # lazy: the notebook's own libraries, on first display
 
-    from ...views.livefigure import LiveFigure
-    from ...views.panel import Panel
-    from ...views.teach import matrix_html
+    from ...views.livefigure import LiveFigure  # lazy: the live views load ipywidgets and mplot3d
+    from ...views.panel import Panel  # lazy: the live views load ipywidgets and mplot3d
+    from ...views.teach import matrix_html  # lazy: the live views load ipywidgets and mplot3d
 
     live = LiveFigure(figsize=(6.0, 6.4))
     ax = live.figure.add_subplot(projection="3d")

@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.lines import Line2D
 
+from ... import robots
 from ...i18n import _
 from ...transforms import Rx
 from ...units import deg2rad
@@ -35,7 +36,7 @@ CAMERA = (20.0, -38.0)                                          # elevation, azi
 
 def _arm_axes(fig, robot, title, rect=(0.0, 0.09, 1.0, 0.84)):
     """A 3D axes with ``robot`` drawn faintly at θ = 0 (no triads): the steps are drawn over it."""
-    from ...views.view import robot_view
+    from ...views.view import robot_view  # lazy: the live views load ipywidgets and mplot3d
 
     ax = fig.add_axes(rect, projection="3d")
     robot_view(robot, robot.qz, ax=ax, triads=False, labels=False, alpha=0.35)
@@ -74,7 +75,6 @@ Z_LABEL_SHIFT = {0: (-1.5, 0, 0.4), 1: (0, 0.8, 1.2), 2: (-1.6, 0, 0.6), 3: (-1.
 def paso1_figure(robot=None, length: float = 3.5):
     """Paso 0 and 1 (seed 000, figure 7): the joints A_1 … A_n on their axes (dashed) and each z_i on the
     axis of A_(i+1), from its origin. Returns the figure."""
-    from ... import robots
 
     robot = robots.ssrms() if robot is None else robot
     fig = new_figure((9.6, 7.0), layout=None)
@@ -94,7 +94,6 @@ def paso1_figure(robot=None, length: float = 3.5):
 def paso2_figure(robot=None, length: float = 3.5):
     """Paso 2 (seed 000, figures 8 and 9): each x_i (red) with its case; for parallel axes (case 2) the
     common normal chosen (purple) from z_(i−1) to z_i, where B_i is placed. Returns the figure."""
-    from ... import robots
 
     robot = robots.ssrms() if robot is None else robot
     fig = new_figure((9.6, 7.0), layout=None)
@@ -121,7 +120,6 @@ def paso2_figure(robot=None, length: float = 3.5):
 def paso3_figure(robot=None, length: float = 3.0):
     """Paso 3 (seed 000, figure 14): every frame B_0 … B_n at its origin, y_i = z_i × x_i drawn thick.
     Frames at one point share one label. Returns the figure."""
-    from ... import robots
 
     robot = robots.ssrms() if robot is None else robot
     fig = new_figure((9.6, 7.0), layout=None)
@@ -233,7 +231,7 @@ def seed001_figure(robot, wrong_frames, camera=(12.0, -78.0)):
     """The SSRMS at zero as seed 000 builds it (the robot's own view, with triads) and the chain of
     frames ``wrong_frames`` (n+1, 4, 4) built with seed 001's THz (red, dashed), both ends marked, in one
     box that holds both; seen nearly from the front (x to the right, z up). Returns the figure."""
-    from ...views.view import robot_view
+    from ...views.view import robot_view  # lazy: the live views load ipywidgets and mplot3d
 
     wrong = np.asarray(wrong_frames, dtype=float)[:, :3, 3]
     right = np.asarray(robot.frames(robot.qz), dtype=float)[:, :3, 3]

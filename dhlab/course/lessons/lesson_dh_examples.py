@@ -37,6 +37,7 @@ def fmt(v, digits: int = 6) -> str:
 def from_slide(latex: str, robot) -> sp.Matrix:
     """A bmatrix printed on a slide as a sympy Matrix in the robot's own symbols
     ($C_k$, $S_k$: cosine and sine of joint k's variable; $l_k$, $d_k$: lengths and prismatic variables)."""
+    # lazy: sympy on first symbolic use
     from sympy.parsing.sympy_parser import implicit_multiplication_application, parse_expr, standard_transformations
     if not isinstance(latex, str) or r"\begin{bmatrix}" not in latex:
         raise DHLabError(f"expected a slide's matrix as LaTeX with \\begin{{bmatrix}}, got {describe(latex)}.")
@@ -54,7 +55,7 @@ def compare_with_slide(robot, printed: dict, show=None) -> None:
     """Say for each ^{i-1}A_i whether the slide's matrix equals the computed one for every value of
     the symbols, and display the two side by side (``show``: the links i to display, default all;
     ``printed``: {"0A1": {"latex": ..., "lines": [...]}, ...})."""
-    from IPython.display import Math, display
+    from IPython.display import Math, display  # lazy: the notebook's own libraries, on first display
     shown = set(range(1, robot.n + 1)) if show is None else _links(show, robot.n)
     for i in range(1, robot.n + 1):
         key = f"{i - 1}A{i}"
@@ -195,9 +196,9 @@ def elbow_flipped(robot, q_arm_deg) -> tuple[float, float, float]:
 def wrist_centre_panel(robot, q=None):
     """A teach panel of ``robot`` with its wrist centre as a purple dot, and an HTML line under it
     giving the centre's coordinates; returns (panel, line). Display both: ``display(panel, line)``."""
-    import ipywidgets as widgets
+    import ipywidgets as widgets  # lazy: the notebook's own libraries, on first display
 
-    from ...views.teach import teach
+    from ...views.teach import teach  # lazy: the live views load ipywidgets and mplot3d
 
     line, dot = widgets.HTML(), []
 

@@ -38,7 +38,7 @@ def fmt(v, digits: int = 6) -> str:
 
 def show(label: str, M) -> None:
     """Display 'label = M' in LaTeX."""
-    from IPython.display import Math, display
+    from IPython.display import Math, display  # lazy: the notebook's own libraries, on first display
     display(Math(f"{label} = {sp.latex(M)}"))
 
 
@@ -173,7 +173,7 @@ def pr_mechanism_figure(robot, q):
 
 
 def _rectangle(corner, width, height):
-    from matplotlib.patches import Rectangle
+    from matplotlib.patches import Rectangle  # lazy: matplotlib on first picture
     return Rectangle(corner, width, height, facecolor="#c8913a", edgecolor="black", zorder=0.5)
 
 
