@@ -33,7 +33,6 @@ release's manifest) and ``signed_for`` (whose signature the notebook carries).
 """
 from __future__ import annotations
 
-import csv
 import json
 import unicodedata
 from dataclasses import dataclass, field
@@ -43,9 +42,8 @@ from ...assignment import variants as V
 from ...assignment.notebook_cells import prepare_submission
 from ...i18n import N_, _
 from ...validation import DHLabError
-from ..release.notebooks import load_teacher_records
+from ..release.folder import load_teacher_records, manifest_file, manifest_rows, records_file
 from ..release.roster import safe_filename
-from .csvsafe import restored
 
 __all__ = ["COLUMNS", "VariantSetup", "VariantInfo", "setup", "identify", "resolve", "columns", "status_note",
            "feedback_lines", "FALLBACKS", "release_files"]
@@ -98,24 +96,24 @@ def setup(secret_file, release=None, fallback=None) -> VariantSetup:
                              "(its _teacher/variants.json holds every student's variant).")
         return VariantSetup(secret, fallback=fallback)
     release = Path(release)
-    records_file = release / "_teacher" / "variants.json"
+    teacher_file = records_file(release)
     if not release.is_dir():
         raise DHLabError(f"--release {str(release)!r} is not a folder: pass the folder that "
                          "'dhlab-assign release ROSTER.csv -o FOLDER' wrote.")
-    if not records_file.is_file():
+    if not teacher_file.is_file():
         raise DHLabError(f"--release {str(release)!r} has no _teacher/variants.json: pass the folder that "
                          "'dhlab-assign release ROSTER.csv -o FOLDER' wrote (not the students' copies).")
-    records = load_teacher_records(records_file)
+    records = load_teacher_records(teacher_file)
     bad = [sid for sid, record in records.items() if not V.verify(record, sid, secret).ok]
     if records and len(bad) == len(records):
-        raise DHLabError(f"none of the {len(records)} variants in {records_file} verifies with the secret in "
+        raise DHLabError(f"none of the {len(records)} variants in {teacher_file} verifies with the secret in "
                          f"{str(secret_file)!r}: is it the secret the notebooks were released with?")
     if bad:
-        raise DHLabError(f"{len(bad)} of the {len(records)} variants in {records_file} do not verify with the "
+        raise DHLabError(f"{len(bad)} of the {len(records)} variants in {teacher_file} do not verify with the "
                          f"secret (first: {', '.join(map(repr, bad[:5]))}): the teacher's file was changed; "
                          "release the class again, or restore the file from a backup.")
     if not records:
-        raise DHLabError(f"{records_file} lists no students: release the roster again.")
+        raise DHLabError(f"{teacher_file} lists no students: release the roster again.")
     return VariantSetup(secret, records, release_files(release, records), fallback, release)
 
 
@@ -123,15 +121,10 @@ def release_files(release: Path, records: dict) -> dict:
     """Release file stem -> student id, from the manifest (ids with unusual characters get
     another file name, see :func:`dhlab.grading.release.notebooks.safe_filename`)."""
     files = {safe_filename(sid): sid for sid in records}
-    manifest = release / "_teacher" / "manifest.csv"
-    try:                                                # with or without a BOM; cells unescaped (csvsafe)
-        with open(manifest, newline="", encoding="utf-8-sig") as f:
-            for row in csv.DictReader(f):
-                sid, file = restored(row.get("student_id")), restored(row.get("file"))
-                if sid in records and file:
-                    files[unicodedata.normalize("NFC", PurePosixPath(file).stem)] = sid
-    except (OSError, csv.Error, UnicodeDecodeError):
-        pass                                            # the names derived from the ids are enough
+    for row in manifest_rows(manifest_file(release)):     # none: the names derived from the ids are enough
+        sid, file = row.get("student_id"), row.get("file")
+        if sid in records and file:
+            files[unicodedata.normalize("NFC", PurePosixPath(file).stem)] = sid
     return files
 
 

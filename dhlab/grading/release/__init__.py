@@ -3,6 +3,7 @@
 * :mod:`~dhlab.grading.release.notebooks` — the release: a variant drawn and signed for every student
   (its :func:`~dhlab.grading.release.notebooks.main` is ``dhlab-assign``; ``python -m dhlab.grading.release``);
 * :mod:`~dhlab.grading.release.roster` — the roster's student ids, and a safe file name for each;
+* :mod:`~dhlab.grading.release.folder` — a release folder's signed records and manifest, read back;
 * :mod:`~dhlab.grading.release.language` — each released notebook in its student's language;
 * :mod:`~dhlab.grading.release.generate` — the student notebook (package data, ``dhlab/grading/template/``)
   kept the course's, and made again from a solved notebook (``python -m dhlab.grading.release.generate``);

@@ -47,7 +47,6 @@ that cell from the verified variant before running a submission.
 from __future__ import annotations
 
 import argparse
-import csv
 import json
 import sys
 from pathlib import Path, PurePosixPath
@@ -56,10 +55,11 @@ from ...assignment import variants as V
 from ...assignment.notebook_cells import SEAM_CELL_ID, prepare_submission, release_notebook, seam_source
 from ...i18n import _, language_option, set_language
 from ...validation import DHLabError
-from ..book.csvsafe import csv_text, restored
+from ..book.csvsafe import csv_text
 from ..book.gradebook import write_atomic
 from ..options import DEFAULT_SECRET_FILE, shared
-from . import generate, solutions
+from . import folder, generate, solutions
+from .folder import load_teacher_records, manifest_rows  # noqa: F401  (load_teacher_records: API)
 from .language import default_language, in_language, in_spanish, mark_language, roster_languages
 from .roster import ID_COLUMNS, checked_id, csv_rows, look_alikes, read_roster, safe_filename  # noqa: F401  (API)
 
@@ -136,7 +136,7 @@ def previous_release(out: Path, secret: bytes) -> tuple:
     """(id -> signed record, manifest rows) of an earlier release into ``out`` (empty when there
     is none). Refused with a clear error when its records were signed with another secret: two
     secrets in one folder would make half the class unverifiable."""
-    records_file = out / "_teacher" / "variants.json"
+    records_file = folder.records_file(out)
     if not records_file.exists():
         return {}, []
     records = load_teacher_records(records_file)
@@ -146,7 +146,7 @@ def previous_release(out: Path, secret: bytes) -> tuple:
                            "({count} of {total}, first {first!r}): release into a new folder, or pass the "
                            "--secret-file that release was made with. One folder never mixes two secrets.").format(
             folder=out, count=len(foreign), total=len(records), first=foreign[0]))
-    rows = {row["student_id"]: row for row in _manifest_rows(out / "_teacher" / "manifest.csv")
+    rows = {row["student_id"]: row for row in manifest_rows(folder.manifest_file(out))
             if row.get("student_id") in records}
     for sid, record in records.items():                  # a student the manifest lost: rebuilt from the record
         if sid not in rows:
@@ -154,15 +154,6 @@ def previous_release(out: Path, secret: bytes) -> tuple:
             rows[sid] = {"student_id": sid, "file": f"{safe_filename(sid)}.ipynb", "family": variant.family,
                          "fingerprint": V.fingerprint(variant), "language": ""}
     return records, list(rows.values())
-
-
-def _manifest_rows(path) -> list:
-    """The rows of a manifest this module wrote (dicts; [] when there is none), cells unescaped."""
-    try:
-        with open(path, newline="", encoding="utf-8-sig") as f:
-            return [{k: restored(v) for k, v in row.items() if k is not None} for row in csv.DictReader(f)]
-    except (OSError, csv.Error, UnicodeDecodeError):
-        return []
 
 
 def _check_file_names(ids, earlier_rows) -> None:
@@ -216,17 +207,6 @@ def _write_teacher_records(out: Path, teacher: dict, manifest: list) -> None:
 
 
 # --- what the grader needs (the integration seam) ---------------------------------------------------
-
-def load_teacher_records(path) -> dict:
-    """The teacher's copy of every signed record (``release/_teacher/variants.json``): id -> record."""
-    try:
-        records = json.loads(Path(path).read_text(encoding="utf-8"))
-    except (OSError, json.JSONDecodeError) as exc:
-        raise DHLabError(f"cannot read the teacher's variants {str(path)!r}: {exc}.") from None
-    if not isinstance(records, dict):
-        raise DHLabError(f"{str(path)!r} is not the teacher's variants file (a JSON object id -> record).")
-    return records
-
 
 def submission_variant(nb: dict, student_id: str, secret: bytes, teacher_records=None, roster_ids=()):
     """The variant to grade ``nb`` (a submitted notebook, as a dict) against, for ``student_id``.

@@ -16,7 +16,6 @@ that roster). The notebook is in the student's language (the release's manifest,
 """
 from __future__ import annotations
 
-import csv
 import json
 from pathlib import Path
 
@@ -26,6 +25,7 @@ from ...assignment.solution import solved_notebook
 from ...errors import DHLabError
 from ...i18n import _
 from ..options import DEFAULT_SECRET_FILE, shared
+from . import folder
 from .language import default_language, in_language, in_spanish, mark_language, roster_languages, spanish_texts
 from .roster import csv_rows, read_roster
 
@@ -58,25 +58,20 @@ def student_solutions(template: dict, record: dict, language: str = "en") -> dic
     return solved_notebook(mark_language(nb, language), robot)
 
 
-def _released_record(folder: Path, student: str, secret: bytes) -> tuple:
-    """(the signed record, the language) the release in ``folder`` recorded for ``student``,
+def _released_record(release: Path, student: str, secret: bytes) -> tuple:
+    """(the signed record, the language) the release in ``release`` recorded for ``student``,
     verified with ``secret``."""
-    records_file, manifest = folder / "_teacher" / "variants.json", folder / "_teacher" / "manifest.csv"
-    try:
-        record = json.loads(records_file.read_text(encoding="utf-8")).get(student)
-    except (OSError, ValueError, AttributeError):
+    teacher_file = folder.records_file(release)
+    if not teacher_file.is_file():
         raise DHLabError(_("{folder} has no _teacher/variants.json: name the folder dhlab-assign release "
-                           "wrote.").format(folder=folder)) from None
+                           "wrote.").format(folder=release))
+    record = folder.load_teacher_records(teacher_file).get(student)
     if record is None:
-        raise DHLabError(_("{student!r} is not in the release {folder}.").format(student=student, folder=folder))
+        raise DHLabError(_("{student!r} is not in the release {folder}.").format(student=student, folder=release))
     if not V.verify(record, student, secret).ok:
         raise DHLabError(_("the variant recorded for {student!r} does not verify with this secret: pass the "
                            "--secret-file the notebooks were released with.").format(student=student))
-    try:
-        with open(manifest, newline="", encoding="utf-8-sig") as f:
-            rows = [row for row in csv.DictReader(f) if row.get("student_id") == student]
-    except (OSError, csv.Error, UnicodeDecodeError):
-        rows = []
+    rows = [row for row in folder.manifest_rows(folder.manifest_file(release)) if row.get("student_id") == student]
     return record, (rows[0].get("language") or None) if rows else None
 
 
