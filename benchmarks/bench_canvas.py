@@ -3,14 +3,14 @@
     .venv/bin/python benchmarks/bench_canvas.py [--steps 60] [--robot ssrms]
 
 For each backend ("image": Agg + PNG into an Image widget; "ipympl": Agg + a diff PNG; "canvas":
-the moving artists as numbers, see dhlab/views/canvas.py) it times ``view.update(q)`` (forward
+the moving artists as numbers, see dhlab/views/live/canvas.py) it times ``view.update(q)`` (forward
 kinematics, mechanism, artists, and what the backend sends) and a whole slider step (the panel's
 readouts and matrix too), then the canvas' rest frame (Agg + PNG, once the figure holds still).
 "canvas, dragged" is the canvas backend shown in a browser while a slider is dragged (steps
-closer than 0.3 s: frame labels keep their place, see dhlab/views/scene.py). Then a sweep of
+closer than 0.3 s: frame labels keep their place, see dhlab/views/live/scene.py). Then a sweep of
 joint 2 across its range and back (the robot leaves its frame: the PNG backends frame it again
 at once, a full redraw; a dragged canvas at most once a second and when the drag stops, see
-dhlab/views/livefigure.py, REDRAW_EVERY_S): total ms.
+dhlab/views/live/livefigure.py, REDRAW_EVERY_S): total ms.
 The browser's share (decode/paint) is measured by the browser tier (tests/browser).
 """
 from __future__ import annotations
@@ -22,7 +22,7 @@ import time
 import numpy as np
 
 import dhlab
-from dhlab.views.canvas import send_rest
+from dhlab.views.live.canvas import send_rest
 
 
 def timed(action, repeats: int) -> list:

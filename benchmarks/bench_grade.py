@@ -75,7 +75,7 @@ def make_variant_class(folder: Path, n: int) -> tuple:
     returns (extra grader arguments, expected score or (status, max score) per submission)."""
     import numpy as np
     sys.path.insert(0, str(ROOT / "tests"))
-    from dhlab.assignment.model import random_valid_frames
+    from dhlab.assignment.model import random_frames_from_axes
     from dhlab.grading.release import notebooks as R
     from support.solved_notebooks import released_robot, solved
     secret = folder.parent / "secret.key"
@@ -93,7 +93,7 @@ def make_variant_class(folder: Path, n: int) -> tuple:
         if kind == 0:
             nb, want = solved(nb, robot), 10.0
         elif kind == 1:
-            nb, want = solved(nb, robot, random_valid_frames(robot, np.random.default_rng(i))), 10.0
+            nb, want = solved(nb, robot, random_frames_from_axes(robot, np.random.default_rng(i))), 10.0
         elif kind == 2:                                  # the chain out of order: one item of part 3
             nb = solved(nb, robot)
             cell = next(c for c in nb["cells"] if c.get("metadata", {}).get("nbgrader", {}).get("grade_id")

@@ -70,7 +70,7 @@ def _count_named(counts: dict, slipped: int, report) -> None:
 def sweep(per_family: int, pairs: int, seed: int) -> dict:
     from dhlab.assignment import variants as V
     from dhlab.assignment.family import family_names
-    from dhlab.assignment.model import random_valid_frames
+    from dhlab.assignment.model import random_frames_from_axes
     from support.written_answers import (
         links_not_in_their_frames,
         moves_like,
@@ -90,7 +90,7 @@ def sweep(per_family: int, pairs: int, seed: int) -> dict:
             robot = V.robot_of_variant(V.variant(key, int(rng.integers(1 << 30))))
             Q = np.vstack([np.zeros(robot.n)] + [[rng.uniform(max(lo, -3.0), min(hi, 3.0)) for lo, hi in robot.qlim]
                                                  for _ in range(6)])
-            frames = random_valid_frames(robot, rng, slide=0.3)
+            frames = random_frames_from_axes(robot, rng, slide=0.3)
             rows = rows_in_degrees(robot, frames)
             slips = _slips(robot, rows)
             for idx in rng.choice(len(slips), size=min(12, len(slips)), replace=False):

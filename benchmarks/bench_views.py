@@ -43,29 +43,24 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import numpy as np  # noqa: E402
-from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
-from matplotlib.figure import Figure  # noqa: E402
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-import dhlab  # noqa: E402
-from dhlab.views import framing  # noqa: E402
-from dhlab.views.labels import group_points, merged_name  # noqa: E402
-from dhlab.views.mechanism import Mechanism  # noqa: E402
-from dhlab.views.teach import teach  # noqa: E402
-from dhlab.views.triads import letter_points  # noqa: E402
-from dhlab.views.view import (  # noqa: E402
+import dhlab
+from dhlab.views import framing
+from dhlab.views.labels import group_points, merged_name
+from dhlab.views.mechanism import Mechanism
+from dhlab.views.panels.teach import teach
+from dhlab.views.triads import (
     AXIS_COLORS,
-    EE_COLOR,
-    JOINT_AXIS_COLOR,
-    LINK_COLOR,
-    TRIAD_FRACTION,
-    line_in_box,
+    letter_points,
     triad_segments,
-    typical_size,
 )
+from dhlab.views.viewbase import EE_COLOR, JOINT_AXIS_COLOR, LINK_COLOR, TRIAD_FRACTION, line_in_box, typical_size
 
 FIGSIZE, DPI = (5.6, 5.6), 100       # the teach panel's default size
 

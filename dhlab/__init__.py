@@ -18,11 +18,12 @@ import sys
 import types
 
 from . import ik, lines, mdh, moved, robots, transforms
-from .chain import Link, Move, Robot, Rot
+from .chain import Robot
 from .dh import DHRobot, PrismaticDH, RevoluteDH
 from .dh_frames import DHAssignment, dh_assignment, dh_from_axes, joint_axes
 from .errors import DHLabError
 from .i18n import get_language, set_language
+from .links import Link, Move, Rot
 from .mdh import MDHRobot, PrismaticMDH, RevoluteMDH, to_modified, to_standard
 from .table import DHTable
 from .transforms import Rx, Ry, Rz, Tr, Tx, Tz, check_rigid, dh_matrix, inv, is_rigid, rpy, trans
@@ -37,11 +38,11 @@ _LAZY = {
     "dh_frames": ("dhlab.dh_frames", None),
     "views": ("dhlab.views", None),
     "view": ("dhlab.views.view", None),
-    "teach": ("dhlab.views.teach", "teach"),
+    "teach": ("dhlab.views.panels.teach", "teach"),
     "robot_view": ("dhlab.views.view", "robot_view"),
-    "stepthrough": ("dhlab.views.stepthrough", "stepthrough"),
-    "stepthrough_link": ("dhlab.views.stepthrough", "stepthrough_link"),
-    "spaces": ("dhlab.views.spaces", "spaces"),
+    "stepthrough": ("dhlab.views.panels.stepthrough", "stepthrough"),
+    "stepthrough_link": ("dhlab.views.panels.stepthrough", "stepthrough_link"),
+    "spaces": ("dhlab.views.panels.spaces", "spaces"),
     "show_matrix": ("dhlab.views.matrices", "show_matrix"),
     "projector": ("dhlab.views.projector", "projector"),
 }
@@ -86,7 +87,7 @@ def __dir__():
 
 class _Package(types.ModuleType):
     """``dhlab`` itself. Importing a submodule makes Python set it as an attribute of its
-    package, so ``import dhlab.teach`` (the old path of the module ``dhlab.views.teach``) would
+    package, so ``import dhlab.teach`` (the old path of the module ``dhlab.views.panels.teach``) would
     replace the function ``dhlab.teach`` with a module: the functions of ``_LAZY`` keep their name."""
 
     def __setattr__(self, name, value):

@@ -26,12 +26,12 @@ import numpy as np
 
 from . import kinematics
 from .chain_inputs import joint_label, joint_names, link_list, numeric_params, one_value
+from .errors import DHLabError
 from .i18n import _
 from .lazy_sympy import has_symbols
 from .links import AXES, Factor, Link, Move, Rot
-from .units import Angle
 from .validation import (
-    DHLabError,
+    Angle,
     as_angle,
     as_flag,
     as_index,
@@ -44,7 +44,8 @@ from .validation import (
 )
 
 # Factor, Rot, Move and Link live in dhlab.links, the checks of a robot's arguments in dhlab.chain_inputs;
-# named here too, where the notebooks, dh.py and mdh.py have always imported them
+# named here too, where the notebooks (`from dhlab.chain import Link, Robot, Rot`) have always imported
+# them (the package's own modules import each from its home)
 __all__ = ["Factor", "Rot", "Move", "Link", "Robot", "link_list", "numeric_params"]
 
 # The symbolic side (fk_sym, A(i), compact) needs sympy, which takes longer to import than the rest
@@ -258,7 +259,7 @@ class Robot:
             # collapse the sums of angles afterwards.
             blocks = self._sym_blocks()
             left = None if timeout is None else timeout - (time.monotonic() - start)
-            return simplify_chain(blocks, base, tool, self.q_symbols,
+            return simplify_chain(blocks, base, tool,
                                   sum_angles=not self.merges_parallel_joints, timeout=left)
         return chain_product([base] + self.link_matrices_sym() + [tool])
 

@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from .errors import DHLabError
 from .i18n import _
 from .lazy_sympy import has_symbols, is_matrix, is_symbol
 from .links import Link
-from .units import Angle
-from .validation import DHLabError, as_number, describe
+from .validation import Angle, as_number, describe
 
 __all__ = ["link_list", "joint_names", "one_value", "numeric_params", "joint_label", "SYMPY_CONSTANTS"]
 

@@ -25,22 +25,15 @@ import re
 
 import numpy as np
 
-from .chain import Link, Move, Robot, Rot, link_list, numeric_params
+from .chain import Robot
+from .chain_inputs import link_list, numeric_params
+from .errors import DHLabError
 from .i18n import N_, _
 from .lazy_sympy import is_sympy
+from .links import Link, Move, Rot
 from .table import DHTable
 from .transforms import Rx, Rz
-from .validation import (
-    Angle,
-    DHLabError,
-    as_angle,
-    as_choice,
-    as_length,
-    as_number,
-    as_sequence,
-    describe,
-    has_angle_mark,
-)
+from .validation import Angle, as_angle, as_choice, as_length, as_number, as_sequence, describe, has_angle_mark
 
 __all__ = ["RevoluteDH", "PrismaticDH", "DHRobot"]
 

@@ -27,6 +27,7 @@ and the global language (:func:`set_language`) otherwise:
 """
 from __future__ import annotations
 
+import argparse
 import contextlib
 import gettext
 import os
@@ -38,7 +39,8 @@ from .errors import DHLabError
 
 __all__ = ["LANGUAGES", "ENV_VAR", "LOCALE_DIR", "set_language", "get_language", "language_from_env", "_", "N_",
            "ngettext", "speaking", "current_language", "translations", "CASE_WORDS", "case_word",
-           "checked_language", "default_language", "language_option", "split_language", "as_teacher"]
+           "checked_language", "default_language", "language_option", "split_language", "argparse_speaking",
+           "error_line", "as_teacher"]
 
 LANGUAGES = {"en": "English", "es": "Español"}
 ENV_VAR = "DHLAB_LANGUAGE"
@@ -202,20 +204,43 @@ def split_language(argv) -> tuple:
     return language_option(argv), rest
 
 
+def error_line(prog: str, message) -> str:
+    """A command's error line as argparse writes it (``prog: error: message``, then a newline),
+    in this thread's language."""
+    return _("%(prog)s: error: %(message)s\n") % {"prog": prog, "message": message}
+
+
+@contextlib.contextmanager
+def argparse_speaking():
+    """argparse's own words ("usage:", "positional arguments", "error: …") in this thread's language
+    inside the block. argparse looks each of them up with its module's ``_`` (gettext's default
+    domain, which the course does not use): the block points that ``_`` at the course's catalogs,
+    where the teacher's domain holds their translations (:mod:`dhlab.grading.parser_words`)."""
+    saved = argparse._, argparse.ngettext
+    argparse._ = _
+    argparse.ngettext = ngettext
+    try:
+        yield
+    finally:
+        argparse._, argparse.ngettext = saved
+
+
 def as_teacher(prog: str, argv, run, strip: bool = False) -> int:
     """``run(argv)`` with every message in the teacher's language (:func:`language_option`); with
     ``strip`` the ``--language`` option is taken out of ``argv`` first (:func:`split_language`).
-    A bad language is reported as ``prog: error: …``, exit status 2, as argparse does."""
+    argparse's own words included (:func:`argparse_speaking`). A bad language is reported as
+    ``prog: error: …``, exit status 2, as argparse does."""
     try:
         if strip:
             language, argv = split_language(argv)
         else:
             language = language_option(argv)
     except DHLabError as exc:
-        print(f"{prog}: error: {exc}", file=sys.stderr)
+        print(error_line(prog, exc), file=sys.stderr, end="")
         return 2
     previous = set_language(language)
     try:
-        return run(argv)
+        with argparse_speaking():
+            return run(argv)
     finally:
         set_language(previous)

@@ -18,8 +18,9 @@ import math
 
 import numpy as np
 
+from .errors import DHLabError
 from .i18n import _
-from .validation import DHLabError, as_length, as_tolerance, describe
+from .validation import as_length, as_tolerance, describe
 
 __all__ = ["pr_mechanism_ik", "pr_mechanism_ik_explained", "IKSolutions"]
 

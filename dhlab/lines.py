@@ -29,8 +29,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .errors import DHLabError
 from .i18n import _
-from .validation import DHLabError, as_float_array, as_number, check_length_size
+from .validation import as_float_array, as_number, check_length_size
 
 __all__ = ["Line", "LineRelation", "relation", "closest_points"]
 

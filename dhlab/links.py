@@ -18,13 +18,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .errors import DHLabError
 from .i18n import _
 from .lazy_sympy import has_symbols, is_matrix, is_sympy
 from .transforms import Rx, Ry, Rz, trans
-from .units import Angle
 from .validation import (
     FULL_TURN,
-    DHLabError,
+    Angle,
     as_angle,
     as_choice,
     as_flag,

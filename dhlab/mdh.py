@@ -42,7 +42,8 @@ only the base, the joint axes and the end effector are the same.
 """
 from __future__ import annotations
 
-from .chain import Robot, link_list
+from .chain import Robot
+from .chain_inputs import link_list
 from .dh import (
     DHParameters,
     DHRobot,
@@ -53,11 +54,12 @@ from .dh import (
     refuse_convention,
     table_rows,
 )
+from .errors import DHLabError
 from .i18n import N_, _
 from .lazy_sympy import has_symbols, is_matrix
 from .table import DHTable
 from .transforms import Rx, Rz, trans
-from .validation import DHLabError, describe
+from .validation import describe
 
 __all__ = ["RevoluteMDH", "PrismaticMDH", "MDHRobot", "mdh_matrix", "to_modified", "to_standard",
            "to_modified_rows", "to_standard_rows"]

@@ -6,8 +6,12 @@ The package was split into maths (``dhlab/``), ``views/``, ``course/``, ``assign
 each old name with the module at its new place — the very same module object, imported only when
 the old name is, so that ``import dhlab`` stays light.
 
->>> import dhlab.livefigure, dhlab.views.livefigure
->>> dhlab.livefigure is dhlab.views.livefigure
+Two old paths stay for good, silently (:data:`KEPT`): notebooks already handed to students import
+them in locked cells. Every other old path warns (a ``DeprecationWarning`` naming the new place,
+pointed at the line that imports it) and goes in version 0.2 (docs/developers/changelog.md).
+
+>>> import dhlab.livefigure, dhlab.views.livefigure, dhlab.views.live.livefigure
+>>> dhlab.livefigure is dhlab.views.livefigure is dhlab.views.live.livefigure
 True
 """
 from __future__ import annotations
@@ -16,17 +20,24 @@ import importlib
 import importlib.abc
 import importlib.machinery
 import sys
+import warnings
 
-__all__ = ["MOVED", "new_name", "MovedFinder", "install"]
+__all__ = ["MOVED", "KEPT", "REMOVED_IN", "new_name", "MovedFinder", "install"]
 
 # old name -> new name; an old package's submodules follow it (dhlab.assign.frames -> dhlab.dh_frames.frames)
 MOVED = {
     "dhlab.view": "dhlab.views.view",
-    "dhlab.livefigure": "dhlab.views.livefigure",
-    "dhlab.panel": "dhlab.views.panel",
-    "dhlab.spaces": "dhlab.views.spaces",
-    "dhlab.stepthrough": "dhlab.views.stepthrough",
-    "dhlab.teach": "dhlab.views.teach",
+    "dhlab.livefigure": "dhlab.views.live.livefigure",
+    "dhlab.panel": "dhlab.views.panels.panel",
+    "dhlab.spaces": "dhlab.views.panels.spaces",
+    "dhlab.stepthrough": "dhlab.views.panels.stepthrough",
+    "dhlab.teach": "dhlab.views.panels.teach",
+    # views/ was one flat folder until its roles became sub-packages: the live figure's machinery in
+    # views/live/, the slider panels in views/panels/ (the released notebooks say
+    # `from dhlab.views.teach import teach`)
+    **{f"dhlab.views.{name}": f"dhlab.views.live.{name}" for name in (
+        "livefigure", "backend", "notebook_cell", "ipympl_canvas", "canvas", "scene", "rig", "keys", "png")},
+    **{f"dhlab.views.{name}": f"dhlab.views.panels.{name}" for name in ("panel", "teach", "stepthrough", "spaces")},
     "dhlab.exercises": "dhlab.course.exercises",
     "dhlab.exercises_dh": "dhlab.course.exercises",
     "dhlab.course.exercises_dh": "dhlab.course.exercises",      # notebooks 5-7's exercises joined the one registry
@@ -41,6 +52,10 @@ MOVED = {
     # ``python -m dhlab.grading.generate --check``: the release's tools are in grading/release/
     "dhlab.grading.generate": "dhlab.grading.release.generate",
 }
+
+# imported by notebooks already released to students (locked cells): never warn, never removed
+KEPT = ("dhlab.course.assignment", "dhlab.course.family_notebook")
+REMOVED_IN = "0.2"
 
 
 def new_name(fullname: str) -> str | None:
@@ -65,6 +80,9 @@ class MovedFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         return importlib.machinery.ModuleSpec(fullname, self, origin=new)
 
     def create_module(self, spec):
+        if not _kept(spec.name):
+            warnings.warn(f"{spec.name} moved to {spec.origin}: import it from there (the old path goes in "
+                          f"dhlab {REMOVED_IN})", DeprecationWarning, stacklevel=_importer_level())
         module = importlib.import_module(spec.origin)
         spec.loader_state = module.__spec__
         return module
@@ -80,6 +98,32 @@ class MovedFinder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         new = new_name(fullname)
         source = f"import runpy\nrunpy.run_module({new!r}, run_name='__main__', alter_sys=True)\n"
         return compile(source, f"<{fullname}, moved to {new}>", "exec")
+
+
+def _kept(fullname: str) -> bool:
+    return any(fullname == old or fullname.startswith(old + ".") for old in KEPT)
+
+
+def _importer_level() -> int:
+    """The ``stacklevel`` of the line that imports the old name: the first frame, counted from
+    ``warnings.warn``'s caller, outside this file and the import system (so that a warning shows
+    where a notebook cell or a script says the old name, as Python shows one for its own code)."""
+    frame, level = sys._getframe(1), 1
+    while frame is not None and _in_import_system(frame):
+        frame = frame.f_back
+        # warnings.warn does not count the import system's own frames (importlib._bootstrap): nor do we
+        level += frame is not None and not _is_bootstrap(frame)
+    return level
+
+
+def _is_bootstrap(frame) -> bool:
+    filename = frame.f_code.co_filename
+    return "importlib" in filename and "_bootstrap" in filename
+
+
+def _in_import_system(frame) -> bool:
+    module = frame.f_globals.get("__name__", "")
+    return module == __name__ or module == "importlib" or _is_bootstrap(frame)
 
 
 def install() -> None:

@@ -12,10 +12,14 @@ can be changed by keyword. Lengths keep their symbols (``l1`` …) so that
 """
 from __future__ import annotations
 
-from .chain import Link, Move, Robot, Rot
-from .dh import DHRobot
+import math
+
+from .chain import Robot
+from .dh import DHRobot, RevoluteDH
+from .errors import DHLabError
 from .i18n import _
-from .validation import DHLabError, as_flag, as_length
+from .links import Link, Move, Rot
+from .validation import as_flag, as_length
 
 __all__ = [
     "robot_no_tan_elemental_1", "robot_no_tan_elemental_2", "pr_mechanism",
@@ -143,10 +147,29 @@ def seed003_6dof(l1=1.0, l2=2.0, l3=3.0, l4=4.0) -> DHRobot:
 
 def ssrms() -> DHRobot:
     """The SSRMS (Canadarm2) of seed 000: its 14 factors Tz[θ,d]·Tx[α,a] as a DH table
-    (lengths in the seed's units; joints ±270° as on the real arm)."""
+    (lengths in the seed's units; joints ±270° as on the real arm).
+
+    Its table is all numbers, so the links are made from them directly rather than read as text
+    by :meth:`DHRobot.from_table` (which reads with sympy): building and moving the arm, the browser
+    edition's first slider, never loads sympy. Its symbolic side (``fk_sym()``, ``A(i)``) is the same,
+    made exact on first use (-90° is -π/2, 2.5 is 5/2).
+
+    >>> arm = ssrms()
+    >>> print(arm.table())
+     i | θ  | d   | a  | α    | joint
+     1 | θ1 | 2.5 | 0  | -90° | R
+     2 | θ2 | 6   | 0  | -90° | R
+     3 | θ3 | 6   | 12 | 0°   | R
+     4 | θ4 | 1   | 12 | 0°   | R
+     5 | θ5 | 6   | 0  | -90° | R
+     6 | θ6 | 6   | 0  | -90° | R
+     7 | θ7 | 0   | 0  | 0°   | R
+    """
     rows = [("theta1", 2.5, 0, -90), ("theta2", 6, 0, -90), ("theta3", 6, 12, 0), ("theta4", 1, 12, 0),
             ("theta5", 6, 0, -90), ("theta6", 6, 0, -90), ("theta7", 0, 0, 0)]
-    return DHRobot.from_table(rows, name=_("SSRMS (seed 000)"), qlim=[(-270, 270)] * 7)
+    limits = (math.radians(-270), math.radians(270))
+    links = [RevoluteDH(d=float(d), a=float(a), alpha=math.radians(alpha), qlim=limits) for _q, d, a, alpha in rows]
+    return DHRobot(links, name=_("SSRMS (seed 000)"), joint_symbols=[q for q, *_numbers in rows])
 
 
 PUMA_QLIM_DEG = [(-160, 160), (-45, 225), (-225, 45), (-110, 170), (-100, 100), (-266, 266)]

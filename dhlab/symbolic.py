@@ -30,8 +30,9 @@ import sympy as sp
 from sympy.simplify.fu import TR10i
 from sympy.utilities.exceptions import SymPyDeprecationWarning
 
+from .errors import DHLabError
 from .i18n import _
-from .validation import DHLabError, as_angle, as_length, as_number, describe
+from .validation import as_angle, as_length, as_number, describe
 
 __all__ = ["exact", "exact_angle", "exact_length", "chain_product", "simplify_chain", "compact", "legend",
            "check_finite_entries", "count_ops", "tree_size"]
@@ -137,7 +138,7 @@ def tree_size(e, _memo=None) -> int:
 EXPAND_LIMIT = 1_000   # entries larger than this (as a tree) stay as multiplied: the catalogue's largest is 86
 
 
-def simplify_chain(blocks, base, tool, q_symbols, sum_angles: bool = False, timeout=None):
+def simplify_chain(blocks, base, tool, sum_angles: bool = False, timeout=None):
     """Compact product ``base · blocks[0] ··· blocks[-1] · tool`` (sympy matrices).
 
     The blocks should already carry the sums of angles of parallel joints (so

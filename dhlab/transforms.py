@@ -30,18 +30,10 @@ import math
 
 import numpy as np
 
+from .errors import DHLabError
 from .i18n import _
 from .lazy_sympy import is_matrix, is_sympy
-from .validation import (
-    DHLabError,
-    as_angle,
-    as_length,
-    as_matrix4,
-    as_sym_matrix4,
-    as_text,
-    as_tolerance,
-    rigid_problem,
-)
+from .validation import as_angle, as_length, as_matrix4, as_sym_matrix4, as_text, as_tolerance, rigid_problem
 
 __all__ = [
     "Rx", "Ry", "Rz", "trans", "Tr", "Tz", "Tx", "dh_matrix",

@@ -27,7 +27,7 @@ from .errors import DHLabError
 from .i18n import _
 from .lazy_sympy import is_expr, is_matrix
 from .validation import as_float_array, as_number
-from .validation.marks import Angle, AngleArray, has_angle_mark, is_angle  # noqa: F401  (their old home)
+from .validation.marks import Angle, AngleArray, has_angle_mark, is_angle
 
 __all__ = ["deg2rad", "rad2deg", "Angle", "AngleArray", "is_angle", "has_angle_mark"]
 

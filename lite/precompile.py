@@ -63,7 +63,7 @@ import IPython, IPython.core.completer, ipywidgets, comm, matplotlib_inline.back
 import asyncio, json, pyodide.http, pyodide.webloop, micropip    # (pyodide_kernel needs a browser)
 import matplotlib.pyplot as plt, numpy as np, sympy as sp
 import dhlab
-from dhlab.views.teach import teach
+from dhlab.views.panels.teach import teach
 from dhlab.course.exercises import exercise
 import dhlab.data
 panel = teach(dhlab.robots.ssrms())

@@ -4,7 +4,8 @@ The English notebooks are the only place code is written. Each markdown cell is 
 ``tools/locale/es/notebooks/<stem>.po`` (see :mod:`tools.edition_catalog`), and
 ``notebooks/es/<stem>.ipynb`` is made from the two: the same cells, ids and metadata, the
 markdown replaced by its translation (links adjusted to work from ``notebooks/es/``), the code
-identical but for one line of the set-up cell, ``dhlab.set_language("en")``, which says "es".
+identical but for its comments (translated in the same catalog) and one line of the set-up cell,
+``dhlab.set_language("en")``, which says "es".
 It is then executed, like the English notebooks. Three commands::
 
     python -m tools.edition extract [notebooks...]   # catalogs in step with the English (naming
@@ -36,9 +37,17 @@ import nbformat
 
 from dhlab.errors import DHLabError
 
-from .edition_catalog import catalog_problems, extract, markdown_cells, read_catalog, shipped_texts, translations
+from .edition_catalog import (
+    catalog_problems,
+    comment_translations,
+    extract,
+    markdown_cells,
+    read_catalog,
+    shipped_texts,
+    translations,
+)
 from .edition_home import HOME, home_notebook
-from .edition_text import anchor, headings, relink
+from .edition_text import anchor, headings, relink, with_comments
 
 __all__ = ["NOTEBOOKS", "EDITION_NOTEBOOKS", "SHIPPED", "Edition", "EditionError", "main"]
 
@@ -132,10 +141,13 @@ class Edition:
                                "built:\n  " + "\n  ".join(problems))
         nb = copy.deepcopy(self.english(stem))
         spanish = translations(self.catalog(stem))
+        notes = comment_translations(self.catalog(stem))
         setup = _setup_cell(nb)
         for cell in nb.cells:
             if cell.cell_type == "markdown" and cell.source.strip():
                 cell.source = relink(spanish[cell.id], lambda target: self._target(stem, target))
+            elif cell.cell_type == "code" and cell.id in notes:     # the code as in English, its comments in Spanish
+                cell.source = with_comments(cell.source, notes[cell.id])
         setup.source = setup.source.replace(SET_LANGUAGE_EN, SET_LANGUAGE_ES)
         return nb
 
@@ -215,7 +227,8 @@ class Edition:
             if mine.cell_type != en.cell_type:
                 problems.append(f"{where_cell}: a {mine.cell_type} cell, in English a {en.cell_type} cell")
             elif mine.cell_type == "code" and mine.source != want.source:
-                problems.append(f"{where_cell}: its code differs from the English notebook's")
+                problems.append(f"{where_cell}: its code differs from the English notebook's (or its "
+                                "comments from the catalog's translations: rebuild it)")
             elif mine.source != want.source:
                 problems.append(f"{where_cell}: its text is not what build makes of the catalog (rebuild it)")
             elif _lasting(mine.metadata) != _lasting(want.metadata) or mine.get("attachments") != want.get(

@@ -1,8 +1,12 @@
-"""One gettext catalog per notebook: the Spanish text of each markdown cell, keyed by cell id.
+"""One gettext catalog per notebook: the Spanish text of each markdown cell and of each comment of
+its code cells, keyed by cell id.
 
 ``tools/locale/es/notebooks/<stem>.po`` holds one entry per markdown cell of the English
 notebook: ``msgctxt`` is the cell id, ``msgid`` the cell's whole English source, ``msgstr``
-its Spanish translation. :func:`extract` keeps the catalog in step with the notebook by
+its Spanish translation. A code cell's comments are entries too, one per comment (``msgctxt``
+the code cell's id, ``msgid`` the comment from its ``#`` to the end of its line, an extracted
+comment ``#. a comment of a code cell`` above it): the code stays the English code, its comments
+are read in Spanish. :func:`extract` keeps the catalog in step with the notebook by
 gettext's own rules (Babel's ``Catalog.update``): a new cell gets an empty entry; a cell
 whose English changed keeps its old translation marked *fuzzy*, with the previous English
 beside it (``#| msgid``) so the translator sees what changed; a removed cell's entry becomes
@@ -21,18 +25,23 @@ from babel.messages.pofile import denormalize, normalize, read_po
 
 from dhlab.errors import DHLabError
 
-from .edition_text import headings, placeholder_difference
+from .edition_text import comments, headings, placeholder_difference
 from .i18n_catalog import po_text
 
 HEADER_COMMENT = """\
 # The Spanish edition of a dhlab notebook: one entry per markdown cell, msgctxt = the cell id,
-# msgid = the English source, msgstr = its Spanish translation (code cells are never here).
+# msgid = the English source, msgstr = its Spanish translation; code cells are here only by their
+# comments (one entry per comment, msgid from its '#' to the end of its line: translate the words,
+# keep the '#' and the layout), their code never.
 # Update after changing the English: python -m tools.edition extract <notebook>"""
 
 # Babel guesses these from a "%" or "{}" in the text: markdown is not a format string
 FORMAT_FLAGS = {"python-format", "python-brace-format"}
 
-__all__ = ["markdown_cells", "template", "read_catalog", "write_catalog", "extract",
+COMMENT_NOTE = "a comment of a code cell"
+
+__all__ = ["markdown_cells", "code_comments", "template", "comment_translations", "read_catalog", "write_catalog",
+           "extract",
            "translations", "shipped_texts", "catalog_problems"]
 
 
@@ -46,6 +55,20 @@ def markdown_cells(nb) -> list[tuple[str, str]]:
     return [(cell.id, cell.source) for cell in cells]
 
 
+def code_comments(nb) -> list[tuple[str, str]]:
+    """(cell id, comment) of every comment of the code cells, in order (a comment repeated in one
+    cell once)."""
+    found = []
+    for cell in nb.cells:
+        if cell.cell_type == "code":
+            for text in dict.fromkeys(comments(cell.source)):
+                if not cell.get("id"):
+                    raise DHLabError(f"a code cell has no id (it starts {cell.source[:40]!r}): save the "
+                                     "notebook with nbformat 4.5 or newer so every cell gets one.")
+                found.append((cell.id, text))
+    return found
+
+
 def template(nb) -> Catalog:
     """The catalog of the English notebook ``nb`` with every translation empty."""
     catalog = Catalog(locale="es", project="dhlab", charset="utf-8", fuzzy=False,
@@ -53,6 +76,9 @@ def template(nb) -> Catalog:
                       last_translator="dhlab course")
     for cell_id, source in markdown_cells(nb):
         message = catalog.add(source, string="", context=cell_id)
+        message.flags -= FORMAT_FLAGS
+    for cell_id, text in code_comments(nb):
+        message = catalog.add(text, string="", context=cell_id, auto_comments=[COMMENT_NOTE])
         message.flags -= FORMAT_FLAGS
     return catalog
 
@@ -136,11 +162,22 @@ def _match_changed_cells(catalog: Catalog) -> None:
 
 
 def translations(catalog: Catalog) -> dict[str, str]:
-    """cell id -> Spanish text of every translated entry (fuzzy ones too: their text is still Spanish)."""
+    """markdown cell id -> its Spanish text, for every translated entry (fuzzy ones too: their text is
+    still Spanish); the comments of code cells are :func:`comment_translations`."""
     found = {}
     for message in list(catalog) + list(catalog.obsolete.values()):
-        if message.id and message.string and message.context not in found:
+        if message.id and message.string and message.context not in found \
+                and COMMENT_NOTE not in message.auto_comments:
             found[message.context] = message.string
+    return found
+
+
+def comment_translations(catalog: Catalog) -> dict[str, dict[str, str]]:
+    """code cell id -> {English comment: its Spanish} for every translated comment (fuzzy ones too)."""
+    found = {}
+    for message in list(catalog) + list(catalog.obsolete.values()):
+        if message.id and message.string and COMMENT_NOTE in message.auto_comments:
+            found.setdefault(message.context, {}).setdefault(message.id, message.string)
     return found
 
 
@@ -148,33 +185,46 @@ def shipped_texts(catalog: Catalog) -> str:
     """The catalog as the package reads it at run time (no Babel there): JSON, cell id -> its English
     (``en``) and Spanish (``es``) text, for every translated entry that is not fuzzy (a fuzzy one
     translates an English text that changed)."""
-    cells = {m.context: {"en": m.id, "es": m.string} for m in catalog if m.id and m.string and not m.fuzzy}
+    done = [m for m in catalog if m.id and m.string and not m.fuzzy]
+    cells = {m.context: {"en": m.id, "es": m.string} for m in done if COMMENT_NOTE not in m.auto_comments}
+    notes = {}
+    for m in done:
+        if COMMENT_NOTE in m.auto_comments:
+            notes.setdefault(m.context, {})[m.id] = m.string
     return json.dumps({"about": "Generated by python -m tools.edition build from its catalog: do not edit.",
-                       "cells": cells}, indent=1, ensure_ascii=False) + "\n"
+                       "cells": cells, "comments": notes}, indent=1, ensure_ascii=False) + "\n"
 
 
 def catalog_problems(nb, catalog: Catalog) -> list[str]:
     """One line per reason the catalog cannot make the Spanish notebook yet ([] when it can)."""
     problems = []
-    cells = markdown_cells(nb)
+    entries = [(cell_id, english, False) for cell_id, english in markdown_cells(nb)]
+    entries += [(cell_id, text, True) for cell_id, text in code_comments(nb)]
     current = set()
-    by_cell = {m.context: m for m in catalog if m.id}
-    for cell_id, english in cells:
+    by_cell = {}
+    for m in catalog:
+        if m.id:
+            by_cell.setdefault(m.context, []).append(m)
+    for cell_id, english, is_comment in entries:
         message = catalog.get(english, context=cell_id)
+        what = f"cell {cell_id}, comment {english!r}" if is_comment else f"cell {cell_id}"
         if message is None:
             if cell_id in by_cell:
-                problems.append(f"cell {cell_id}: its English text changed since the catalog was updated "
+                problems.append(f"{what}: its English text changed since the catalog was updated "
                                 "(run extract: the old translation becomes fuzzy; revise it)")
-                current.add((by_cell[cell_id].id, cell_id))
+                current.update((m.id, cell_id) for m in by_cell[cell_id])
             else:
-                problems.append(f"cell {cell_id}: not in the catalog (run extract, then translate it)")
+                problems.append(f"{what}: not in the catalog (run extract, then translate it)")
             continue
         current.add((english, cell_id))
         if not message.string:
-            problems.append(f"cell {cell_id}: untranslated")
+            problems.append(f"{what}: untranslated")
         elif message.fuzzy:
-            problems.append(f"cell {cell_id}: fuzzy (the English changed: revise the translation, "
+            problems.append(f"{what}: fuzzy (the English changed: revise the translation, "
                             "then remove the '#, fuzzy' line and the '#|' lines)")
+        elif is_comment:
+            if not message.string.startswith("#") or "\n" in message.string:
+                problems.append(f"{what}: its translation must be one line that starts with '#'")
         else:
             problems += _translation_problems(cell_id, english, message.string)
     for message in catalog:

@@ -12,13 +12,20 @@ link targets of a cell (the edition lives one folder down, in ``notebooks/es/``)
 ['$\\\\theta$', '05_x.ipynb#Rules', '<br>', '`Rz`']
 >>> anchor("2. `THx` *is* wrong")
 '2.-THx-is-wrong'
+
+The comments of a code cell are translated too (the code itself never is): :func:`comments`
+finds them, :func:`with_comments` puts their translations in their place (both from the package,
+:mod:`dhlab.grading.release.comments`, whose Spanish releases translate them the same way).
 """
 from __future__ import annotations
 
 import re
 from collections import Counter
 
-__all__ = ["placeholders", "placeholder_difference", "headings", "anchor", "relink"]
+from dhlab.grading.release.comments import comments, with_comments
+
+__all__ = ["placeholders", "placeholder_difference", "headings", "anchor", "relink", "comments",
+           "with_comments"]
 
 # In the order they are taken out of the text: code first (a `$` in code is not maths),
 # then maths, then link targets (a `<target>` is not an HTML tag), then HTML tags.
@@ -87,3 +94,4 @@ def relink(markdown: str, new_target) -> str:
     for start, end, new in sorted(edits, reverse=True):
         markdown = markdown[:start] + new + markdown[end:]
     return markdown
+

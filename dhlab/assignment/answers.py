@@ -28,9 +28,11 @@ from dataclasses import dataclass, field
 
 from ..course.checks.case_words import read_case_words
 from ..i18n import _, case_word
+from ..validation import decimal_comma_note
 from .encode import ANSWER_NAMES, MAX_JOINTS, MAX_JSON_BYTES, encode_json, to_plain
 
-__all__ = ["ANSWER_NAMES", "N_JOINTS", "MAX_JOINTS", "MAX_NUMBER", "NOT_ANSWERED", "Unreadable", "Answers", "Row",
+__all__ = ["ANSWER_NAMES", "N_JOINTS", "MAX_JOINTS", "MAX_NUMBER", "NOT_ANSWERED", "Unreadable", "Case",
+           "written_case", "Answers", "Row",
            "Term", "parse_answers", "parse_json", "answers_from_namespace", "MAX_JSON_BYTES"]
 
 N_JOINTS = 6              # the PUMA 560's: the default when the robot is not said
@@ -48,6 +50,27 @@ class _NotAnswered:
 
 
 NOT_ANSWERED = _NotAnswered()
+
+
+class Case(str):
+    """One entry of x_cases as read: equal to its case ('intersect', 'parallel', 'skew', 'coincident'),
+    and remembering the words the student wrote (:attr:`written`), which the feedback quotes back.
+
+    >>> case = Case("intersect", "se intersecan")
+    >>> case == "intersect", case.written
+    (True, 'se intersecan')
+    """
+    written: str
+
+    def __new__(cls, case: str, written: str):
+        obj = super().__new__(cls, case)
+        obj.written = written
+        return obj
+
+
+def written_case(case) -> str:
+    """What the student wrote for ``case`` (a :class:`Case`), else the case itself."""
+    return getattr(case, "written", case)
 
 
 @dataclass(frozen=True)
@@ -232,9 +255,15 @@ def _show(value) -> str:
     return text if len(text) <= 80 else text[:77] + "..."
 
 
+def _with_note(message: str, note: str) -> str:
+    """``message`` and, when there is one, the decimal-comma ``note`` after it."""
+    return f"{message}. {note}" if note else message
+
+
 def _number(value, what: str) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise _Bad(_("{what} must be a number, got {value}").format(what=what, value=_show(value)))
+        raise _Bad(_with_note(_("{what} must be a number, got {value}").format(what=what, value=_show(value)),
+                              decimal_comma_note(value)))
     number = float(value)
     if not math.isfinite(number):
         raise _Bad(_("{what} must be a finite number, got {value}").format(what=what, value=value))
@@ -291,7 +320,7 @@ def _case(item):
             value=_show(item)))
     reading = read_case_words(item)
     if reading.case is not None:
-        return reading.case
+        return Case(reading.case, item.strip())
     return Unreadable(_case_problem(item, reading))
 
 
@@ -335,7 +364,9 @@ def _point(value, where: str) -> tuple:
         raise _Bad(_("{where} has 4 numbers; a point has 3: drop the trailing 1 of the homogeneous form").format(
             where=where))
     if not isinstance(value, list) or len(value) != 3:
-        raise _Bad(_("{where} must be a point (x, y, z), got {value}").format(where=where, value=_show(value)))
+        message = _("{where} must be a point (x, y, z), got {value}").format(where=where, value=_show(value))
+        raise _Bad(_with_note(message,
+                              decimal_comma_note(value, 3) if isinstance(value, (list, tuple)) else ""))
     return tuple(_number(v, where) for v in value)
 
 

@@ -45,7 +45,7 @@ from .family import spec as family_spec
 from .reference import dh_program, row_matrix
 
 __all__ = ["AssignmentRobot", "build", "physical_frames", "rows_from_frames",
-           "random_valid_frames", "GRIPPER"]
+           "random_frames_from_axes", "GRIPPER"]
 
 GRIPPER = (0.03, 0.04)       # finger half-gap and finger length, metres (the drawing only)
 
@@ -376,8 +376,12 @@ def _perpendicular(z, rng) -> np.ndarray:
     return _unit(v - (v @ z) * z)
 
 
-def random_valid_frames(robot: AssignmentRobot, rng, slide: float = 0.3) -> list:
-    """A random valid set of DH frames 0…n at home, frame 0 the world frame.
+def random_frames_from_axes(robot: AssignmentRobot, rng, slide: float = 0.3) -> list:
+    """A random valid set of DH frames 0…n at home, frame 0 the world frame, built from the
+    robot's drawn axis lines by the convention's rules alone: independent of the frame families
+    the checks accept (:func:`~dhlab.assignment.valid_frames.random_family_frames`), so the
+    tests can hold the checks against the convention, and the only one that moves a prismatic
+    axis' line.
 
     Every free choice of the convention is drawn: the sense of each z_i, the sense of
     x_i, the origin slid along z_i when consecutive axes are parallel (and x_i turned

@@ -42,7 +42,7 @@ import numpy as np
 from .. import transforms
 from ..errors import DHLabError
 from ..i18n import _, current_language, speaking
-from ..validation import describe
+from ..validation import decimal_comma_note, describe
 from . import checks
 from . import inputs as _inputs
 from .answers import Row, answers_from_namespace, parse_answers
@@ -171,13 +171,25 @@ class XFactor:
         return f"Tx[{self.alpha:g}°, {self.a:g}]"
 
 
-def Tz(theta, d) -> ZFactor:
+def _two_values(name: str, names: str, values: tuple) -> None:
+    """A clear message, not Python's TypeError, when Tz or Tx gets more than its two values
+    (decimal commas, ``Tz(q1, 0,4)``, are the usual reason: the message says so)."""
+    if len(values) > 2:
+        note = decimal_comma_note(values, 2)
+        raise DHLabError(_("{name} takes two values ({names}); got {count}: {values}.").format(
+            name=name, names=names, count=len(values), values=", ".join(map(str, values)))
+            + (" " + note if note else ""))
+
+
+def Tz(theta, d, *more) -> ZFactor:
     """Seed 000's ``Tz[θ, d]``: θ in degrees (e.g. ``q2 + 90``), d in metres."""
+    _two_values("Tz", "θ, d", (theta, d, *more))
     return ZFactor(theta, d)
 
 
-def Tx(alpha, a) -> XFactor:
+def Tx(alpha, a, *more) -> XFactor:
     """Seed 000's ``Tx[α, a]``: α in degrees, a in metres."""
+    _two_values("Tx", "α, a", (alpha, a, *more))
     return XFactor(alpha, a)
 
 

@@ -23,11 +23,12 @@ import io
 import json
 import re
 
-from ..i18n import _
+from ..i18n import N_, _
 from . import variants as V
 from .family import shown_name, spec
 from .model import AssignmentRobot
 from .reference import reference
+from .solution import ANSWER_MARKER, is_answer_marker
 
 __all__ = ["SEAM_CELL_ID", "use_variant", "active_robot", "current_robot", "clear_variant", "seam_source",
            "robot_intro", "release_notebook", "prepare_submission", "apply_rules", "formula_rules"]
@@ -111,11 +112,11 @@ def seam_source(record: dict) -> str:
     n = len(record["variant"]["senses"])
     names = ", ".join(f"q{i}" for i in range(1, n + 1))
     variant_text = json.dumps(record["variant"], sort_keys=True)
-    return ("# Your robot: drawn for you and signed by your teacher. Do not edit this cell.\n"
+    return (_("# Your robot: drawn for you and signed by your teacher. Do not edit this cell.") + "\n"
             "from dhlab.assignment import use_variant\n"
             f"my_robot = use_variant({variant_text},\n"
             f"                       student_id={json.dumps(record['student_id'])})\n"
-            f"{names} = joint_variables({n})     # the joint variables q_i of your robot")
+            f"{names} = joint_variables({n})     " + _("# the joint variables q_i of your robot"))
 
 
 def robot_intro(robot, record) -> str:
@@ -153,6 +154,24 @@ def _a(name: str) -> str:
 
 
 _WORDS = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight"}
+# the same numbers in the student's language, for the answer cells' instructions
+_NUMBER_WORDS = {1: N_("one"), 2: N_("two"), 3: N_("three"), 4: N_("four"), 5: N_("five"), 6: N_("six"),
+                 7: N_("seven"), 8: N_("eight")}
+PART1_STUB = N_('# Part 1: write your answers below, as Python.\n'
+                '#   n_links, n_joints   whole numbers\n'
+                '#   joint_types         one letter per joint: "R" (revolute) or "P" (prismatic); "RPR" would be a\n'
+                '#                       robot whose first and last joints turn and whose middle joint slides\n'
+                '#   x_cases             a list of {words} words, for x1 … x{last}: "intersect", "parallel" or "skew"')
+
+
+def _number_word(n: int) -> str:
+    return _(_NUMBER_WORDS[n]) if n in _NUMBER_WORDS else str(n)
+
+
+def answer_marker() -> str:
+    """The line where an answer cell asks for the answer, in the current language (the
+    grader and the solved notebook know it in every language: :data:`~.solution.ANSWER_MARKERS`)."""
+    return _(ANSWER_MARKER)
 
 
 def _own_robot_text(text: str, robot, name: str) -> str:
@@ -208,7 +227,7 @@ def _comments_only(source: str) -> tuple:
     lines = [ln for ln in source.split("\n") if ln.strip()]
     if not lines or not all(ln.lstrip().startswith("#") for ln in lines):
         return None
-    marker = lines[-1] if lines[-1].strip().upper().startswith("# YOUR") else None
+    marker = lines[-1] if lines[-1].strip().upper().startswith("# YOUR") or is_answer_marker(lines[-1]) else None
     return (lines[:-1] if marker else lines), marker
 
 
@@ -218,6 +237,10 @@ def _with_marker(text: str, marker) -> str:
 
 def _part1_stub(robot, source: str) -> str | None:
     n = robot.n
+    comments = _comments_only(source)
+    if comments is not None and comments[0] and comments[0][0].startswith("# Part 1: write your answers"):
+        text = _(PART1_STUB).format(words=_number_word(n - 1), last=n - 1)     # the course's, in the student's language
+        return _with_marker(text, answer_marker() if comments[1] else None)
     new, count = re.subn(r"a list of \w+ words, for x1 … x\d+",
                          f"a list of {_WORDS.get(n - 1, n - 1)} words, for x1 … x{n - 1}", source)
     return new if count or n == 6 else None
@@ -231,14 +254,14 @@ def _part2_stub(robot, source: str) -> str | None:
         body = []
         for k, link in enumerate(robot.points):
             names = ", ".join(name for name, _point in link)
-            where = "in frame 0 (the world frame)" if k == 0 else f"in frame {k}"
+            where = _("in frame 0 (the world frame)") if k == 0 else _("in frame {k}").format(k=k)
             body.append(f"    {k}: ...,   # {names:<18} {where}")
         return "\n".join(lines[:start + 1] + body + lines[end:])
     comments = _comments_only(source)
     if comments is None:
         return None
-    links = [f"link {k}: " + ", ".join(name for name, _point in link)
-             + (" (in frame 0, the world frame)" if k == 0 else "")
+    links = [_("link {k}: {points}").format(k=k, points=", ".join(name for name, _point in link))
+             + (" " + _("(in frame 0, the world frame)") if k == 0 else "")
              for k, link in enumerate(robot.points)]
     rows, row = [], "#  "
     for item in links:
@@ -248,10 +271,11 @@ def _part2_stub(robot, source: str) -> str | None:
         row += " " + item + "  "
     rows.append(row)
     n = robot.n
-    text = (f"# Part 2: write link_points below: for each link k = 0 … {n}, its points in its own frame k\n"
-            "# (metres), in the table's order:\n" + "\n".join(r.rstrip() for r in rows) + "\n"
-            f"# as a dict {{0: [(x, y, z), (x, y, z)], 1: [...], ...}} (or a list of {n + 1} lists).")
-    return _with_marker(text, comments[1])
+    text = (_("# Part 2: write link_points below: for each link k = 0 … {n}, its points in its own frame k\n"
+              "# (metres), in the table's order:").format(n=n) + "\n" + "\n".join(r.rstrip() for r in rows) + "\n"
+            + _("# as a dict {{0: [(x, y, z), (x, y, z)], 1: [...], ...}} (or a list of {count} lists).").format(
+                count=n + 1))
+    return _with_marker(text, answer_marker() if comments[1] else None)
 
 
 def _part3_stub(robot, source: str) -> str | None:
@@ -265,13 +289,13 @@ def _part3_stub(robot, source: str) -> str | None:
     if comments is None:
         return None
     prismatic = [i for i, k in enumerate(robot.kinds, 1) if k == "P"]
-    variable = ("θ_i with its joint variable for a revolute joint" +
-                (f", d_i for a prismatic one (joint {', '.join(map(str, prismatic))})" if prismatic else "") +
-                ": q3, q3 - 90, -q3 + 180, ...")
-    text = (f"# Part 3: write T1 … T{n} below, each T_i = Tz(θ_i, d_i) @ Tx(α_i, a_i) (degrees and metres,\n"
-            f"# {variable}), then\n"
+    variable = (_("θ_i with its joint variable for a revolute joint") +
+                (_(", d_i for a prismatic one (joint {joints})").format(joints=", ".join(map(str, prismatic)))
+                 if prismatic else "") + ": q3, q3 - 90, -q3 + 180, ...")
+    text = (_("# Part 3: write T1 … T{n} below, each T_i = Tz(θ_i, d_i) @ Tx(α_i, a_i) (degrees and metres,\n"
+              "# {variable}), then").format(n=n, variable=variable) + "\n"
             f"# chain = {' @ '.join(f'T{i}' for i in range(1, n + 1))}")
-    return _with_marker(text, comments[1])
+    return _with_marker(text, answer_marker() if comments[1] else None)
 
 
 def _outputs(obj, figure: bool) -> list:

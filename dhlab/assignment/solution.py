@@ -48,13 +48,17 @@ import copy
 import math
 import re
 
+from ..i18n import N_, _
 from .model import rows_from_frames
 from .reference import reference, relation
 
-__all__ = ["ANSWER_MARKER", "BEGIN", "END", "ANSWER_CELLS", "answers", "part1_answers", "part2_answers",
+__all__ = ["ANSWER_MARKER", "ANSWER_MARKERS", "is_answer_marker", "BEGIN", "END", "ANSWER_CELLS", "answers",
+           "part1_answers", "part2_answers",
            "part3_answers", "solved_notebook", "number"]
 
-ANSWER_MARKER = "# YOUR CODE HERE"       # where the student notebook's answer cell asks for the answer
+ANSWER_MARKER = N_("# YOUR CODE HERE")   # where the student notebook's answer cell asks for the answer
+# ... and in each language of the course (the Spanish one from the catalog; a test keeps them equal)
+ANSWER_MARKERS = {"en": ANSWER_MARKER, "es": "# ESCRIBA SU CÓDIGO AQUÍ"}
 BEGIN, END = "### BEGIN SOLUTION", "### END SOLUTION"
 HIDDEN_BEGIN, HIDDEN_END = "### BEGIN HIDDEN TESTS", "### END HIDDEN TESTS"
 # a check cell's feedback variable, e.g. "feedback_1 = check_part1(globals())"
@@ -151,11 +155,20 @@ def _source(cell) -> str:
     return "".join(source) if isinstance(source, list) else source
 
 
+def is_answer_marker(line: str) -> bool:
+    """Whether ``line`` is the answer marker of a student notebook, in any language of the course.
+
+    >>> [is_answer_marker(line) for line in ("    # YOUR CODE HERE", "# ESCRIBA SU CÓDIGO AQUÍ", "x = 1")]
+    [True, True, False]
+    """
+    return line.strip() in ANSWER_MARKERS.values()
+
+
 def _with_solution(source: str, code: str) -> str:
     """The answer cell's text with ``code`` between BEGIN and END SOLUTION in place of the
     marker line (indented like it); after the text when the cell has no marker."""
     lines = source.split("\n")
-    at = next((i for i, line in enumerate(lines) if line.strip() == ANSWER_MARKER), None)
+    at = next((i for i, line in enumerate(lines) if is_answer_marker(line)), None)
     indent = "" if at is None else lines[at][:len(lines[at]) - len(lines[at].lstrip())]
     block = [indent + line for line in [BEGIN, *code.split("\n"), END]]
     if at is None:
@@ -169,7 +182,7 @@ def _with_hidden_score(source: str) -> str:
     found = FEEDBACK.search(source)
     if found is None or HIDDEN_BEGIN in source:
         return source
-    score = f"{found.group(1)}.score      # nbgrader: the partial credit of this cell"
+    score = f"{found.group(1)}.score      " + _("# nbgrader: the partial credit of this cell")
     return "\n".join([source, HIDDEN_BEGIN, score, HIDDEN_END])
 
 

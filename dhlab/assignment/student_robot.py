@@ -14,9 +14,10 @@ import math
 
 import numpy as np
 
-from ..chain import Link, Move, Robot, Rot
+from ..chain import Robot
 from ..errors import DHLabError
 from ..i18n import _
+from ..links import Link, Move, Rot
 from .answers import Row, answers_from_namespace
 from .checks.analysis import rows_of
 from .family import shown_name
@@ -114,7 +115,7 @@ def teach(namespace, **options):
     """A teach panel (sliders in degrees, or metres for a sliding joint) for your robot: your
     links assembled by your transformations, with your DH frames (x red, y green, z blue).
     Not scored. Before part 3 is answered: a :class:`~dhlab.assignment.pictures.Note` saying so."""
-    from ..views.teach import teach as teach_panel  # ipywidgets: only when a panel is asked for
+    from ..views.panels.teach import teach as teach_panel  # ipywidgets: only when a panel is asked for
 
     ref = current_robot()
     try:

@@ -20,7 +20,7 @@ from . import model
 from .reference import TOL_DEG, TOL_POS, Reference, cache_of, reference, relation, row_matrix
 
 __all__ = ["FrameFamily", "frame_family", "nearest_valid_frame", "valid_frames_near", "is_valid_frame",
-           "fit_link", "rotation_angle", "random_valid_frames", "dh_rows_from_frames"]
+           "fit_link", "random_family_frames", "dh_rows_from_frames"]
 
 
 @dataclass
@@ -159,12 +159,6 @@ def _loose_member(family: FrameFamily, base, phi, offset) -> tuple:
     return F, offset - move
 
 
-def rotation_angle(R1, R2) -> float:
-    """The angle (degrees) of the rotation that takes R1 to R2."""
-    c = (np.trace(R1.T @ R2) - 1) / 2
-    return math.degrees(math.acos(max(-1.0, min(1.0, c))))
-
-
 def nearest_valid_frame(ref: Reference, k: int, F) -> tuple:
     """The valid DH frame k nearest to ``F`` (home pose): (frame, angle°, distance m)."""
     angle, dist, build = min(_near(ref, k, F), key=lambda m: math.radians(m[0]) + m[1] / 0.1)
@@ -269,14 +263,14 @@ def _fit_loose(family: FrameFamily, base, P, W) -> tuple:
 
 # --- other valid answers: the free choices of the DH convention ------------------------------
 
-def random_valid_frames(rng, ref: Reference | None = None) -> list:
-    """A random valid set of DH frames 0…n at home: each frame a random member of its
-    family (signs of z and x, origins slid along parallel axes, the last x turned). A robot
-    with a prismatic joint (an :class:`~dhlab.assignment.model.AssignmentRobot`): its own
-    :func:`~dhlab.assignment.model.random_valid_frames`, which also moves the sliding axes' lines."""
+def random_family_frames(rng, ref: Reference | None = None) -> list:
+    """A random valid set of DH frames 0…n at home, each frame drawn from its family, the very
+    families the checks accept (signs of z and x, origins slid along parallel axes, the last x
+    turned). A robot with a prismatic joint (an :class:`~dhlab.assignment.model.AssignmentRobot`):
+    :func:`~dhlab.assignment.model.random_frames_from_axes`, which also moves the sliding axes' lines."""
     ref = ref or reference()
     if "P" in ref.kinds:               # the line of a sliding axis ties two frames' choices together
-        return model.random_valid_frames(ref, rng)
+        return model.random_frames_from_axes(ref, rng)
     frames = []
     for k in range(ref.n + 1):
         family = frame_family(ref, k)

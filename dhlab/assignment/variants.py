@@ -9,7 +9,7 @@ arm — at home every link is on the robot's side of its mounting plate — whos
 table cannot be looked up: working it out from the drawn axes is the exercise.
 
 A variant is a small JSON-able dict (:meth:`Variant.to_dict`, :meth:`Variant.from_dict`,
-exact both ways). The teacher's secret signs it for one student (:func:`sign`, HMAC-SHA256
+exact both ways). The teacher's secret signs it for one student (:func:`sign_record`, HMAC-SHA256
 over a canonical JSON of the variant and the student id) and :func:`verify` says whether
 a notebook's record is that student's: ``ok``, ``missing``, ``tampered`` or
 ``other_student``.
@@ -19,7 +19,7 @@ a notebook's record is that student's: ``ok``, ``missing``, ``tampered`` or
 (True, False)
 >>> Variant.from_dict(v.to_dict()) == v
 True
->>> record = sign(v, "ana", b"a teacher's secret, 16+ bytes")
+>>> record = sign_record(v, "ana", b"a teacher's secret, 16+ bytes")
 >>> verify(record, "ana", b"a teacher's secret, 16+ bytes").status
 'ok'
 >>> verify(record, "bruno", b"a teacher's secret, 16+ bytes").status
@@ -46,7 +46,7 @@ from .model import AssignmentRobot, build
 
 __all__ = ["Variant", "variant", "table_digest", "student_variant", "roster_variants", "robot_of_variant", "shown_name",
            "fingerprint",
-           "canonical_json", "sign", "verify", "Verification", "STATUSES", "SCHEME", "METADATA_KEY",
+           "canonical_json", "sign_record", "verify", "Verification", "STATUSES", "SCHEME", "METADATA_KEY",
            "load_secret", "new_secret", "MIN_SECRET_BYTES"]
 
 FORMAT = 1
@@ -356,7 +356,7 @@ def _mac(variant_dict: dict, student_id: str, secret: bytes) -> str:
     return hmac.new(_secret_bytes(secret), message.encode("ascii"), hashlib.sha256).hexdigest()
 
 
-def sign(v: Variant, student_id: str, secret: bytes) -> dict:
+def sign_record(v: Variant, student_id: str, secret: bytes) -> dict:
     """The record kept in the student's notebook metadata: the variant, the student id and
     the HMAC-SHA256 signature of both with the teacher's secret."""
     if not isinstance(student_id, str) or not student_id:
@@ -381,7 +381,7 @@ class Verification:
 
 
 def verify(record, student_id: str, secret: bytes, roster_ids=()) -> Verification:
-    """Is ``record`` (a notebook's metadata record, see :func:`sign`) the variant signed for
+    """Is ``record`` (a notebook's metadata record, see :func:`sign_record`) the variant signed for
     ``student_id``?
 
     * ``ok``: signed for this student with this secret;
@@ -418,7 +418,7 @@ def verify(record, student_id: str, secret: bytes, roster_ids=()) -> Verificatio
 
 
 def new_secret() -> bytes:
-    """A fresh random secret (32 bytes, as hex text) for :func:`sign`."""
+    """A fresh random secret (32 bytes, as hex text) for :func:`sign_record`."""
     return _secrets.token_hex(32).encode("ascii")
 
 
@@ -428,8 +428,9 @@ def load_secret(path) -> bytes:
     try:
         secret = path.read_bytes().strip()
     except OSError as exc:
-        raise DHLabError(f"cannot read the secret file {str(path)!r}: {exc.strerror}.") from None
+        raise DHLabError(_("cannot read the secret file {path!r}: {why}.").format(
+            path=str(path), why=exc.strerror)) from None
     if len(secret) < MIN_SECRET_BYTES:
-        raise DHLabError(f"the secret file {str(path)!r} holds {len(secret)} bytes: at least "
-                         f"{MIN_SECRET_BYTES} are needed (a long random text).")
+        raise DHLabError(_("the secret file {path!r} holds {count} bytes: at least {needed} are needed (a long "
+                           "random text).").format(path=str(path), count=len(secret), needed=MIN_SECRET_BYTES))
     return secret

@@ -14,7 +14,7 @@ from __future__ import annotations
 import json
 from importlib import resources
 
-from ..validation import DHLabError
+from ..errors import DHLabError
 
 NAMES = ("seed_cases", "seed002_printed_A")
 

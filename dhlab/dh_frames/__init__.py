@@ -57,10 +57,11 @@ input, :mod:`dhlab.dh_frames.frames` places the frames (rules 4–9),
 from __future__ import annotations
 
 from ..dh import DHRobot
+from ..errors import DHLabError
 from ..i18n import _
 from ..kinematics import elementary
 from ..transforms import inv
-from ..validation import DHLabError, check_joint_values
+from ..validation import check_joint_values
 from .frames import Placer
 from .reading import (
     CASE1_RULES,

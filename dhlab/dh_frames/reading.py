@@ -15,12 +15,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import DHLabError
 from ..i18n import _
 from ..units import has_angle_mark
-from ..validation import FULL_TURN, DHLabError, as_float_array, as_number, check_length_size, rigid_problem
+from ..validation import FULL_TURN, as_float_array, as_number, check_length_size, rigid_problem
 from .report import vector_text
 
-__all__ = ["CASE1_RULES", "PARALLEL_RULES", "PRISMATIC_RULES"]
+__all__ = ["CASE1_RULES", "PARALLEL_RULES", "PRISMATIC_RULES", "short_repr"]
 
 CASE1_RULES = {"z_prev x z": +1, "z x z_prev": -1, "nearest": 0}
 PARALLEL_RULES = ("at_joint", "zero_d")
@@ -154,10 +155,19 @@ def robot_size(points) -> float:
     return size if size > 0 else 1.0
 
 
-def short_repr(x) -> str:
-    """A repr of ``x`` for an error message, at most 60 characters."""
-    text = repr(x)
-    return text if len(text) <= 60 else text[:57] + "..."
+def short_repr(x, width: int = 60) -> str:
+    """``repr(x)`` cut to ``width`` characters for a message (the input's errors here, a student's
+    answer in the course's feedback). Never raises: a value whose repr fails (a list nested
+    thousands deep, a broken ``__repr__``) is named by its type.
+
+    >>> short_repr(list(range(30)), 20)
+    '[0, 1, 2, 3, 4, 5…'
+    """
+    try:
+        text = repr(x)
+    except Exception:                     # RecursionError, or whatever a student's __repr__ raises
+        text = _("<a {type} that cannot be printed>").format(type=type(x).__name__)
+    return text if len(text) <= width else text[:width - 3] + "…"
 
 
 def _count(x):

@@ -14,9 +14,11 @@ This package runs them on a whole class, in four sub-packages:
   (:mod:`~dhlab.grading.run.selfcheck`) and ``dhlab-grade --clean`` removes what a killed one left
   (:mod:`~dhlab.grading.run.cleanup`);
 * :mod:`dhlab.grading.book` — the gradebook: one submission's row (:mod:`~dhlab.grading.book.submission_row`),
-  the CSV and feedback files (:mod:`~dhlab.grading.book.gradebook`, :mod:`~dhlab.grading.book.csvsafe`),
+  the CSV and feedback files (:mod:`~dhlab.grading.book.gradebook`, :mod:`~dhlab.grading.csvsafe`),
   each submission against its student's own robot (:mod:`~dhlab.grading.book.grade_variants`), the progress
   and the summary (:mod:`~dhlab.grading.book.progress`);
+* what the gradebook and the release both write: CSV cells a spreadsheet never runs as formulas
+  (:mod:`~dhlab.grading.csvsafe`), files written whole or not at all (:mod:`~dhlab.grading.atomic_file`);
 * :mod:`dhlab.grading.release` — ``dhlab-assign release``: a personal robot for every student, signed with
   the teacher's secret (:mod:`~dhlab.grading.release.notebooks`, :mod:`~dhlab.grading.release.roster`), in the
   student's language (:mod:`~dhlab.grading.release.language`), from the student notebook, package data

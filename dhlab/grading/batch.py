@@ -10,7 +10,8 @@ import threading
 import time
 
 from ..i18n import _
-from .book.gradebook import write_atomic, write_csv
+from .atomic_file import write_atomic
+from .book.gradebook import write_csv
 from .book.submission_row import error_row, grade_submission
 from .run.isolation import changed_files
 from .run.launch import Stopped, stop_all

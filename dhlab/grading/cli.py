@@ -82,9 +82,9 @@ from pathlib import Path
 
 # the whole grader is imported before any student code runs (the self-check, the assignment's checks
 # included): what a submission does to sys.modules cannot change the code that grades it
-from ..assignment import checks  # noqa: F401
-from ..i18n import _, as_teacher
-from ..validation import DHLabError
+from ..assignment import checks
+from ..errors import DHLabError
+from ..i18n import N_, _, as_teacher, error_line
 from .batch import Batch, Interrupts, grade_one
 from .book import grade_variants as GV
 from .book.gradebook import (
@@ -108,6 +108,9 @@ from .run.staging import find_submissions, stage_all
 __all__ = ["main", "grade_submission", "find_submissions", "run_submission"]
 
 ASSIGNMENTS = ("puma",)
+
+# the docstring's first line, in the teacher's language in --help
+DESCRIPTION = N_("Grade a folder of submitted PUMA notebooks: ``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv``.")
 
 
 def main(argv=None) -> int:
@@ -143,7 +146,7 @@ def _parse_and_grade(argv, interrupts) -> int:
         source=True,
         language=_("the teacher's language, en or es: this command's messages, the gradebook's statuses "
                    "(default: DHLAB_LANGUAGE, else en); each feedback file is in its student's language"))
-    parser = argparse.ArgumentParser(prog="dhlab-grade", description=__doc__.splitlines()[0], parents=[shared_options],
+    parser = argparse.ArgumentParser(prog="dhlab-grade", description=_(DESCRIPTION), parents=[shared_options],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("assignment", choices=ASSIGNMENTS, help=_("the assignment to grade (puma)"))
     parser.add_argument("submissions", type=Path, help=_("folder of submitted notebooks (*.ipynb, any depth)"))
@@ -179,7 +182,7 @@ def _parse_and_grade(argv, interrupts) -> int:
         try:
             variant_setup = GV.setup(options.secret_file, options.release, options.fallback)
         except DHLabError as exc:
-            print(f"dhlab-grade: error: {exc}", file=sys.stderr)
+            print(error_line("dhlab-grade", exc), file=sys.stderr, end="")
             return 2
         resolve = functools.partial(GV.resolve, variant_setup)
     options.columns = VARIANT_COLUMNS if resolve is not None else COLUMNS

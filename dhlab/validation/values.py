@@ -26,6 +26,7 @@ import numpy as np
 from ..errors import DHLabError
 from ..i18n import N_, _
 from ..lazy_sympy import has_symbols, is_sympy
+from .decimal_commas import looks_like_decimal_comma
 from .marks import Angle, has_angle_mark
 
 __all__ = ["FULL_TURN", "real_number", "LARGEST_LENGTH", "describe", "as_number", "as_angle", "as_length",
@@ -58,6 +59,9 @@ def _not_a_number(x, name: str) -> DHLabError:
         why = _("it is missing (None): give a number")
     elif isinstance(x, (bool, np.bool_)):
         why = _("True/False is not a number here: give the number itself (e.g. 1.0 or 0.0)")
+    elif looks_like_decimal_comma(x):
+        why = _("it is text with a decimal comma: write {fixed}, with a decimal point and without quotes").format(
+            fixed=x.strip().replace(",", ".").replace("−", "-"))
     elif isinstance(x, (str, bytes)):
         why = _("it is text: write the number without quotes (e.g. 0.5, not '0.5')")
     elif isinstance(x, (complex, np.complexfloating)) or (is_sympy(x) and x.is_number):

@@ -18,23 +18,31 @@
 - :mod:`~dhlab.views.view2d` — a planar robot seen from above; :mod:`~dhlab.views.view3d` — a robot in 3D
 - :mod:`~dhlab.views.poses` — a robot's pose in a view or a panel, and its units on a slider
 
-**Live figures** (redrawn in place at screen rate):
+**Live figures** (redrawn in place at screen rate), in :mod:`dhlab.views.live`:
 
-- :mod:`~dhlab.views.livefigure` — a figure redrawn in place (blitting), inline, ipympl or canvas
-- :mod:`~dhlab.views.backend` — which of the three backends a live figure uses (``choose_backend``)
-- :mod:`~dhlab.views.notebook_cell` — the cell a figure belongs to, and the front end that never answered
-- :mod:`~dhlab.views.ipympl_canvas` — ipympl's faster canvas, when ipympl draws
-- :mod:`~dhlab.views.canvas` — the canvas backend: the browser paints what moves (``receive`` takes its messages)
-- :mod:`~dhlab.views.scene` — the moving artists as plain numbers, for the browser to draw
-- :mod:`~dhlab.views.rig` — the robot as a rig: the browser moves the picture itself while a slider moves
-- :mod:`~dhlab.views.keys` — keys that reach the slider (arrows, Page Up/Down) without fighting the deck's
-- :mod:`~dhlab.views.png` — the fast PNG writer of every update
+- :mod:`~dhlab.views.live.livefigure` — a figure redrawn in place (blitting), inline, ipympl or canvas
+- :mod:`~dhlab.views.live.backend` — which of the three backends a live figure uses (``choose_backend``)
+- :mod:`~dhlab.views.live.notebook_cell` — the cell a figure belongs to, and the front end that never answered
+- :mod:`~dhlab.views.live.ipympl_canvas` — ipympl's faster canvas, when ipympl draws
+- :mod:`~dhlab.views.live.canvas` — the canvas backend: the browser paints what moves (``receive`` takes its messages)
+- :mod:`~dhlab.views.live.scene` — the moving artists as plain numbers, for the browser to draw
+- :mod:`~dhlab.views.live.rig` — the robot as a rig: the browser moves the picture itself while a slider moves
+- :mod:`~dhlab.views.live.keys` — keys that reach the slider (arrows, Page Up/Down) without fighting the deck's
+- :mod:`~dhlab.views.live.png` — the fast PNG writer of every update
 
-**Panels** (sliders and a view):
+**Panels** (sliders and a view), in :mod:`dhlab.views.panels`:
 
-- :mod:`~dhlab.views.panel` — what the panels share (sliders, layout, error display)
-- :mod:`~dhlab.views.teach` — the teach panel: one slider per joint, live pose and matrix
-- :mod:`~dhlab.views.stepthrough` — one DH link as Rz, Tz, Tx, Rx applied in turn
-- :mod:`~dhlab.views.spaces` — joint space and Cartesian space side by side
+- :mod:`~dhlab.views.panels.panel` — what the panels share (sliders, layout, error display)
+- :mod:`~dhlab.views.panels.teach` — the teach panel: one slider per joint, live pose and matrix
+- :mod:`~dhlab.views.panels.stepthrough` — one DH link as Rz, Tz, Tx, Rx applied in turn
+- :mod:`~dhlab.views.panels.spaces` — joint space and Cartesian space side by side
+
+**Symbolic matrices**:
+
 - :mod:`~dhlab.views.matrices` — symbolic matrices that fit the notebook column (``show_matrix``)
+
+The floors, lowest first, each importing only the ones below it: the pictures (and the matrices);
+``live/``, which draws with them; a robot in a view, which is a live figure; ``panels/``, a view and
+its sliders. The old flat paths (``dhlab.views.teach``, ``dhlab.views.livefigure``, ...) still
+import the same modules (:mod:`dhlab.moved`).
 """

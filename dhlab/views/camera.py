@@ -33,8 +33,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import DHLabError
 from ..i18n import _
-from ..validation import DHLabError
 
 __all__ = ["PRESETS", "DEFAULT_CAMERA", "readable_camera", "triad_readability", "set_camera",
            "camera_direction"]

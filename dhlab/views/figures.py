@@ -40,10 +40,10 @@ from matplotlib.figure import Figure
 from matplotlib.text import Text
 from matplotlib.transforms import Bbox
 
+from ..errors import DHLabError
 from ..i18n import _
-from ..validation import DHLabError
 
-__all__ = ["new_figure", "CourseFigure", "projector", "projector_scale", "figure_size",
+__all__ = ["new_figure", "CourseFigure", "set_figure_scale", "projector_scale", "figure_size",
            "MIN_DPI", "MIN_WIDTH_PX", "MIN_TEXT_PX", "min_fontsize"]
 
 MIN_DPI = 100             # dots per inch, before the projector scale
@@ -53,9 +53,9 @@ MIN_TEXT_PX = 12          # the smallest text, in pixels (12 px = 8.64 pt at 100
 _projector = {"scale": 1.0, "max_height_px": None}
 
 
-def projector(on: bool = True, scale: float = 1.5, max_height_px: float | None = None) -> float:
+def set_figure_scale(on: bool = True, scale: float = 1.5, max_height_px: float | None = None) -> float:
     """Make every figure and panel made from now on ``scale`` times larger (a
-    lecture hall), or back to normal with ``projector(False)``. Returns the scale
+    lecture hall), or back to normal with ``set_figure_scale(False)``. Returns the scale
     now in force. ``max_height_px``: a figure that would be taller than this
     grows less (never below its normal size), so that it still fits a slide.
 
@@ -63,9 +63,9 @@ def projector(on: bool = True, scale: float = 1.5, max_height_px: float | None =
     in a startup file) and re-run the cells. (``dhlab.projector()`` calls this
     and also makes the page's text larger: :mod:`dhlab.views.projector`.)
 
-    >>> projector(scale=1.5)
+    >>> set_figure_scale(scale=1.5)
     1.5
-    >>> projector(False)
+    >>> set_figure_scale(False)
     1.0
     """
     if not isinstance(on, (bool, int)) or isinstance(on, float):

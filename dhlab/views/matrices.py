@@ -36,9 +36,10 @@ import re
 
 import sympy as sp
 
+from ..errors import DHLabError
 from ..i18n import _
 from ..symbolic import check_finite_entries, compact, legend
-from ..validation import DHLabError, as_number, as_text
+from ..validation import as_number, as_text
 
 __all__ = ["show_matrix", "ShownMatrix", "latex_width_px", "PX_PER_EM", "COLUMN_PX"]
 

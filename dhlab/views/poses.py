@@ -15,8 +15,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import DHLabError
 from ..i18n import _
-from ..validation import DHLabError, check_joint_values
+from ..validation import check_joint_values
 
 __all__ = ["one_pose", "default_q", "checked_start", "unit_of", "q_to_slider", "slider_to_q"]
 

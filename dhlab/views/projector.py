@@ -6,7 +6,7 @@ lecture hall that is too small, and browser zoom enlarges the menus too. On a
 therefore does two things, both undone by ``projector(False)``:
 
 * **figures and panels made afterwards** get more pixels per inch
-  (:func:`dhlab.views.figures.projector`: text, lines and markers grow together,
+  (:func:`dhlab.views.figures.set_figure_scale`: text, lines and markers grow together,
   the layout stays), a tall one only as far as it still fits a slide
   (:data:`SLIDE_FIGURE_PX`);
 * **the page's text** grows at once: a ``<style>`` output sets JupyterLab's own
@@ -14,7 +14,7 @@ therefore does two things, both undone by ``projector(False)``:
   readouts and slider rows). It works wherever JupyterLab's stylesheet is used:
   JupyterLab, its slide deck (jupyterlab-slideshow), the browser edition
   (JupyterLite) and Voilà. (The panels' controls made afterwards are wider to
-  match: :func:`dhlab.views.panel.control_width`.)
+  match: :func:`dhlab.views.panels.panel.control_width`.)
 
 The style is shown with a fixed display id, so each call also updates the
 styles shown by earlier calls: the last call wins, wherever its cell is.
@@ -92,7 +92,7 @@ def projector(on: bool = True, scale: float = DEFAULT_SCALE) -> float:
     1.0
     """
     # checks on and scale; figures made afterwards grow, but no taller than a slide allows
-    scale = figures.projector(on, scale, max_height_px=SLIDE_FIGURE_PX)
+    scale = figures.set_figure_scale(on, scale, max_height_px=SLIDE_FIGURE_PX)
     _show(scale)
     return scale
 

@@ -20,8 +20,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import DHLabError
 from ..i18n import _
-from ..validation import DHLabError, as_choice, as_length, as_matrix4
+from ..validation import as_choice, as_length, as_matrix4
 
 __all__ = ["PALETTES", "AXIS_COLORS", "set_palette", "palette", "axis_colors", "triad_segments",
            "letter_points", "LETTERS", "LETTER_MARKERS", "draw_triad", "free_direction"]

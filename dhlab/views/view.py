@@ -20,7 +20,7 @@ A view draws, for a joint vector ``q``:
 The robot fills its view (:mod:`~dhlab.views.framing`): the limits follow the
 robot's configuration, with hysteresis so that the axes do not jump on every
 step. ``view.update(q)`` only moves the artists; the cached picture of the
-axes (:mod:`~dhlab.views.livefigure`) is redrawn only when the frame changes.
+axes (:mod:`~dhlab.views.live.livefigure`) is redrawn only when the frame changes.
 
 >>> import dhlab
 >>> robot = dhlab.robots.ssrms()
@@ -38,19 +38,11 @@ from .poses import default_q, one_pose
 from .triads import AXIS_COLORS, triad_segments
 from .view2d import RobotView2D
 from .view3d import RobotView3D
-from .viewbase import (  # noqa: F401
-    EE_COLOR,
-    JOINT_AXIS_COLOR,
-    LINK_COLOR,
-    STYLES,
-    TRIAD_FRACTION,
-    RobotView,
-    checked_robot,
-    line_in_box,
-    typical_size,
-    workspace_box,
-)
+from .viewbase import STYLES, RobotView, checked_robot, line_in_box, workspace_box
 
+# robot_view() and the names a script once found beside it: the old path ``dhlab.view`` (see
+# dhlab.moved) offered them all from one module, so they stay importable from here. Code in the
+# package imports each from where it lives (viewbase, labels, triads, poses).
 __all__ = ["RobotView", "RobotView3D", "RobotView2D", "robot_view", "triad_segments",
            "FrameLabels", "FrameLabels3D", "AXIS_COLORS", "default_q", "workspace_box",
            "checked_robot", "one_pose", "line_in_box", "STYLES"]
@@ -58,7 +50,7 @@ __all__ = ["RobotView", "RobotView3D", "RobotView2D", "robot_view", "triad_segme
 
 def robot_view(robot, q=None, *, planar: bool | None = None, **options) -> RobotView:
     """A view of ``robot`` at ``q`` (default: zero, inside the joint limits; a ``q``
-    outside them is refused, as by :func:`~dhlab.views.teach.teach`).
+    outside them is refused, as by :func:`~dhlab.views.panels.teach.teach`).
 
     ``planar=None`` picks the 2D view for robots that stay in the xy plane
     (``robot.is_planar``) and the 3D view otherwise. Other options (keyword

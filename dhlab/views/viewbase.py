@@ -10,10 +10,11 @@ from matplotlib.axes import Axes
 from matplotlib.colors import is_color_like
 from mpl_toolkits.mplot3d import Axes3D
 
+from ..errors import DHLabError
 from ..i18n import _
-from ..validation import DHLabError, as_choice, as_flag, as_number, as_text, describe
+from ..validation import as_choice, as_flag, as_number, as_text, describe
 from . import framing
-from .livefigure import LiveFigure
+from .live.livefigure import LiveFigure
 from .mechanism import Mechanism
 from .poses import checked_start, default_q, one_pose
 from .triads import axis_colors, letter_points

@@ -20,9 +20,10 @@ from dhlab.assignment import answers as ans
 from dhlab.assignment import checks, encode
 from dhlab.assignment import reference as R
 from dhlab.assignment import valid_frames as VF
+from dhlab.errors import DHLabError
+from dhlab.grading import atomic_file
 from dhlab.grading.book import gradebook
 from dhlab.grading.release import generate
-from dhlab.validation import DHLabError
 
 ROOT = Path(__file__).resolve().parents[2]
 SOURCE = generate.find_source()                         # the teacher's notebook: computed, in a temporary folder
@@ -99,7 +100,7 @@ def test_random_valid_dh_assignments_score_full_marks():
     """Signs of every z and x, origins slid along parallel axes, x6 turned: all valid."""
     rng = np.random.default_rng(2024)
     for _ in range(60):
-        report = _report(_namespace_from_frames(VF.random_valid_frames(rng)))
+        report = _report(_namespace_from_frames(VF.random_family_frames(rng)))
         assert report.score == report.max_score, report.text()
 
 
@@ -121,7 +122,7 @@ def test_the_hand_written_alternative_scores_full_marks():
 
 def test_a_valid_chain_matches_the_puma_at_random_configurations():
     rng = np.random.default_rng(7)
-    rows = ans.answers_from_namespace(_namespace_from_frames(VF.random_valid_frames(rng)))
+    rows = ans.answers_from_namespace(_namespace_from_frames(VF.random_family_frames(rng)))
     match = checks.chain_matches(checks.rows_of(rows))
     assert all(match["axes"]) and match["end_effector"] and match["configurations"] == 51
 
@@ -251,7 +252,7 @@ def test_part2_is_scored_in_the_frames_the_students_own_transformations_build():
     link (assembled with the student's T_k they land elsewhere: seed 000, figures 10–13); a slip
     that part 3 charges is not charged again in part 2; the notebook says the same."""
     rng = np.random.default_rng(3)
-    frames = VF.random_valid_frames(rng)
+    frames = VF.random_family_frames(rng)
     ns = _namespace_from_frames(frames)
     assert _report(ns).score == 10                                  # links and rows in the same frames
     ns["link_points"] = _solution_namespace()["link_points"]        # valid, but other frames
@@ -475,7 +476,7 @@ def test_gradebook_writes_are_atomic(tmp_path, monkeypatch):
     def broken_replace(src, dst):
         raise OSError("disk full")
 
-    monkeypatch.setattr(gradebook.os, "replace", broken_replace)
+    monkeypatch.setattr(atomic_file.os, "replace", broken_replace)
     with pytest.raises(OSError):
         gradebook.write_csv(path, [{"submission": "c", "score": "3"}])
     assert path.read_text() == text                                   # the old gradebook, whole
@@ -539,7 +540,7 @@ def test_a_single_slip_costs_at_most_its_own_row(seed, k, slip):
     """One parameter of T_k typed wrong, in any valid assignment: at most T_k is charged
     (nothing when the slip leaves a valid answer, e.g. x6 turned over), never a later row,
     and a charged frame flip names the parameter of T_k."""
-    frames = VF.random_valid_frames(np.random.default_rng(seed))
+    frames = VF.random_family_frames(np.random.default_rng(seed))
     rows = VF.dh_rows_from_frames(frames)
     if SLIPS[slip](rows[k - 1]) == rows[k - 1]:
         return                                                     # -α with α = 0: no slip at all
@@ -631,12 +632,12 @@ def _fixture_namespaces():
     """The solution, valid alternatives, and answers with one slip (the slip fixtures)."""
     out = {"solution": _solution_namespace()}
     for seed in (1, 2):
-        out[f"random valid {seed}"] = _namespace_from_frames(VF.random_valid_frames(np.random.default_rng(seed)))
+        out[f"random valid {seed}"] = _namespace_from_frames(VF.random_family_frames(np.random.default_rng(seed)))
     slip = _solution_namespace()
     slip["T1"] = A.Tz(q1, 0) @ A.Tx(-90, 0)
     slip["chain"] = _chain(slip)
     out["slip α1"] = slip
-    mixed = _namespace_from_frames(VF.random_valid_frames(np.random.default_rng(5)))
+    mixed = _namespace_from_frames(VF.random_family_frames(np.random.default_rng(5)))
     mixed["link_points"] = _solution_namespace()["link_points"]
     out["mixed frames"] = mixed
     return out
@@ -745,7 +746,7 @@ def test_a_slip_before_a_run_of_parallel_axes_costs_one_item(key):
     too ("T4 … crosses it 0.51 m short … check d4"). Every single slip that changes how the chain
     moves costs exactly one item of part 3 (ground truth: the robot's motion, not the grader)."""
     from dhlab.assignment import variants as V
-    from dhlab.assignment.model import random_valid_frames
+    from dhlab.assignment.model import random_frames_from_axes
     from support import written_answers as W
     rng = np.random.default_rng(22)
     counted = 0
@@ -753,7 +754,7 @@ def test_a_slip_before_a_run_of_parallel_axes_costs_one_item(key):
         robot = V.robot_of_variant(V.variant(key, seed))
         Q = np.vstack([np.zeros(robot.n)] + [[rng.uniform(max(lo, -3.0), min(hi, 3.0)) for lo, hi in robot.qlim]
                                              for _ in range(6)])
-        for frames in [robot.home_frames, random_valid_frames(robot, rng, slide=0.3)]:
+        for frames in [robot.home_frames, random_frames_from_axes(robot, rng, slide=0.3)]:
             rows = W.rows_in_degrees(robot, frames)
             for i, (s, j, th, d, a, al) in enumerate(rows):
                 for what, row in {"a and d swapped": (s, j, th, a, d, al), "d + 10 cm": (s, j, th, d + 0.1, a, al),
@@ -773,13 +774,13 @@ def test_a_dropped_theta_offset_on_parallel_axes_names_theta_not_a_tiny_distance
     feedback used to say "x2 must cross z1 … 3.307e-18 m past that point … check d2" (the wrong
     parameter, a meaningless distance, and a correct d2 to change when the origin was slid)."""
     from dhlab.assignment import variants as V
-    from dhlab.assignment.model import random_valid_frames
+    from dhlab.assignment.model import random_frames_from_axes
     from support import written_answers as W
     rng = np.random.default_rng(9)
     seen = 0
     for seed in range(3):
         robot = V.robot_of_variant(V.variant(key, seed))
-        for frames in [robot.home_frames] + [random_valid_frames(robot, rng, slide=0.3) for _ in range(3)]:
+        for frames in [robot.home_frames] + [random_frames_from_axes(robot, rng, slide=0.3) for _ in range(3)]:
             rows = W.rows_in_degrees(robot, frames)
             s, j, th, d, a, al = rows[1]
             if abs(abs(th) - 90) > 1e-6:
@@ -801,13 +802,13 @@ def test_a_second_slip_never_raises_the_score_on_runs_of_parallel_axes(key):
     independent slips in one run may be charged as one item (the frames there may slide: the
     trade-off documented in docs/grading/assignment.md); they are never charged as less than one."""
     from dhlab.assignment import variants as V
-    from dhlab.assignment.model import random_valid_frames
+    from dhlab.assignment.model import random_frames_from_axes
     from support import written_answers as W
     rng = np.random.default_rng(23)
     robot = V.robot_of_variant(V.variant(key, 4))
     Q = np.vstack([np.zeros(robot.n)] + [[rng.uniform(max(lo, -3.0), min(hi, 3.0)) for lo, hi in robot.qlim]
                                          for _ in range(6)])
-    frames = random_valid_frames(robot, rng, slide=0.3)
+    frames = random_frames_from_axes(robot, rng, slide=0.3)
     rows = W.rows_in_degrees(robot, frames)
     slips = [(i, what, row) for i, what, row in W.row_mistakes(robot, rows)
              if row != rows[i] and not W.moves_like(robot, rows[:i] + [row] + rows[i + 1:], Q)]

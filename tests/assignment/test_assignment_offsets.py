@@ -8,7 +8,7 @@ import pytest
 
 from dhlab.assignment import reference as R
 from dhlab.assignment import variants as V
-from dhlab.assignment.model import random_valid_frames
+from dhlab.assignment.model import random_frames_from_axes
 from support import written_answers as W
 
 
@@ -45,7 +45,7 @@ def test_on_frames_of_the_students_own_the_equivalent_offsets_are_all_named(key,
     robot = _robot(key)
     rng = np.random.default_rng(7)
     for _ in range(4):
-        frames = random_valid_frames(robot, rng, slide=0.3)
+        frames = random_frames_from_axes(robot, rng, slide=0.3)
         report, messages = _slip_d(robot, frames, k)
         assert len(W.lost(report)) == 1 and len(messages) == 1, messages
         named = _named(messages[0])

@@ -16,8 +16,8 @@ from dhlab.assignment import notebook as A
 from dhlab.assignment.model import build
 from dhlab.assignment.pictures import axes_figure
 from dhlab.assignment.tables import axes_table, points_table
+from dhlab.errors import DHLabError
 from dhlab.i18n import set_language
-from dhlab.validation import DHLabError
 
 ROOT = Path(__file__).resolve().parents[2]
 SUBMISSIONS = ROOT / "tests/data/submissions"

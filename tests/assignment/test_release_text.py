@@ -16,6 +16,7 @@ from dhlab.assignment.notebook_cells import clear_variant, release_notebook
 from dhlab.grading.book import grade_variants as GV
 from dhlab.grading.release import notebooks as R
 from dhlab.grading.release.generate import find_source, student_notebook
+from dhlab.grading.release.roster import safe_filename
 
 SOURCE = find_source()                  # the teacher's notebook, computed (in a temporary folder)
 
@@ -39,7 +40,7 @@ def _texts(nb):
 
 @pytest.mark.parametrize("family", V.family_names())
 def test_every_cell_speaks_of_the_students_robot(template, family):
-    record = V.sign(V.variant(family, "ana"), "ana", SECRET)
+    record = V.sign_record(V.variant(family, "ana"), "ana", SECRET)
     nb, notes = release_notebook(template, record, figures=False)
     robot = V.robot_of_variant(V.Variant.from_dict(record["variant"]))
     n = robot.n
@@ -58,7 +59,7 @@ def test_every_cell_speaks_of_the_students_robot(template, family):
 
 
 def test_the_puma_variant_keeps_its_name(template):
-    record = V.sign(V.variant("puma560", "ana"), "ana", SECRET)
+    record = V.sign_record(V.variant("puma560", "ana"), "ana", SECRET)
     nb, _ = release_notebook(template, record, figures=False)
     recap = next(text for _, _, text in _texts(nb) if text.startswith("## Recap"))
     assert "PUMA 560 has 6 joints (6 revolute) and 7 links" in recap
@@ -69,9 +70,9 @@ def test_the_puma_variant_keeps_its_name(template):
                                        ("Αλέξανδρος", "Alexandros-"), ("zoë.núñez", "zoe.nunez-"),
                                        ("ž.nuñ-ñ", "z.nun-n-"), ("李雷", "student-")])
 def test_ids_beyond_ascii_keep_readable_ascii_file_names(sid, name):
-    assert R.safe_filename(sid).startswith(name) and R.safe_filename(sid).isascii()
-    assert len(R.safe_filename(sid)) == len(name) + 6                   # the name, then 6 hex digits of the id
-    assert R.safe_filename(sid) != R.safe_filename(sid + "x")
+    assert safe_filename(sid).startswith(name) and safe_filename(sid).isascii()
+    assert len(safe_filename(sid)) == len(name) + 6                   # the name, then 6 hex digits of the id
+    assert safe_filename(sid) != safe_filename(sid + "x")
 
 
 def test_the_grader_finds_the_student_by_a_readable_file_name_even_decomposed(tmp_path):
@@ -83,7 +84,7 @@ def test_the_grader_finds_the_student_by_a_readable_file_name_even_decomposed(tm
     assert R.main(["release", str(roster), "-o", str(tmp_path / "out"), "--secret-file", str(secret)]) == 0
     vs = GV.setup(secret, tmp_path / "out")
     for sid in ("zoë.núñez", "Йоан.Петров"):
-        file = R.safe_filename(sid) + ".ipynb"
+        file = safe_filename(sid) + ".ipynb"
         assert (tmp_path / "out" / file).is_file()
         assert GV.identify(vs, file)[0] == sid
         assert GV.identify(vs, unicodedata.normalize("NFD", file))[0] == sid     # as a Mac hands it back

@@ -11,7 +11,7 @@ import pytest
 from dhlab.assignment import notebook as A
 from dhlab.assignment import variants as V
 from dhlab.assignment.notebook_cells import clear_variant, release_notebook
-from dhlab.assignment.solution import ANSWER_CELLS, ANSWER_MARKER, BEGIN, END, answers, solved_notebook
+from dhlab.assignment.solution import ANSWER_CELLS, ANSWER_MARKERS, BEGIN, END, answers, solved_notebook
 from dhlab.grading.release import generate
 from dhlab.grading.release import notebooks as R
 from dhlab.i18n import current_language, set_language
@@ -74,7 +74,8 @@ def test_every_tracked_notebook_answer_cell_holds_only_the_stub():
             assert BEGIN not in source, name
             if cell.get("metadata", {}).get("nbgrader", {}).get("solution"):
                 lines = [line for line in source.splitlines() if line.strip()]
-                assert lines[-1] == ANSWER_MARKER and all(line.startswith("#") for line in lines), (name, source)
+                assert lines[-1] in ANSWER_MARKERS.values(), (name, source)
+                assert all(line.startswith("#") for line in lines), (name, source)
 
 
 def test_no_tracked_file_holds_the_computed_solution_lines():
@@ -122,7 +123,7 @@ def test_the_computed_solution_earns_full_marks_for_the_puma():
 @pytest.mark.parametrize("seed", ["ana", "bruno", 3])
 def test_the_computed_solution_earns_full_marks_for_every_family(family, seed):
     template = json.loads(generate.TEMPLATE.read_text(encoding="utf-8"))
-    record = V.sign(V.variant(family, seed), str(seed), SECRET)
+    record = V.sign_record(V.variant(family, seed), str(seed), SECRET)
     nb, _notes = release_notebook(template, record, figures=False)
     _full_marks(_run(solved_notebook(nb, V.robot_of_variant(V.Variant.from_dict(record["variant"])))))
 

@@ -8,7 +8,7 @@ import pytest
 from dhlab import DHLabError
 from dhlab.assignment import variants as V
 from dhlab.assignment.family import FAMILY, family_names
-from dhlab.assignment.model import build, physical_frames, random_valid_frames, rows_from_frames
+from dhlab.assignment.model import build, physical_frames, random_frames_from_axes, rows_from_frames
 from dhlab.assignment.reference import dh_frames
 from dhlab.dh_frames import dh_from_axes
 from support import written_answers as W
@@ -81,7 +81,7 @@ def test_reference_and_every_valid_answer_move_like_the_variant(key, seed):
     rebuilt = dh_from_axes([(a.point, a.direction, k) for a, k in zip(robot.axes, robot.kinds)], robot.end_point)
     assert_same_motion(robot, truth, np.array([rebuilt.frames(q) for q in Q]), robot.kinds)
     for _ in range(8):
-        rows = rows_from_frames(robot, random_valid_frames(robot, rng))
+        rows = rows_from_frames(robot, random_frames_from_axes(robot, rng))
         assert_same_motion(robot, truth, dh_frames(rows, robot.kinds, Q), robot.kinds)
 
 
@@ -156,7 +156,7 @@ def test_lengths_must_be_numbers():
 
 def test_signature_statuses():
     ana, bruno = V.student_variant("ana", SECRET), V.student_variant("bruno", SECRET)
-    rec_ana, rec_bruno = V.sign(ana, "ana", SECRET), V.sign(bruno, "bruno", SECRET)
+    rec_ana, rec_bruno = V.sign_record(ana, "ana", SECRET), V.sign_record(bruno, "bruno", SECRET)
     ok = V.verify(rec_ana, "ana", SECRET)
     assert ok.status == "ok" and ok.variant == ana and ok.ok
     # a classmate's notebook handed in: named by its record, or found in the roster
@@ -200,7 +200,7 @@ def test_a_notebook_saved_by_jupyterlab_still_verifies():
         raw = {"variant": v.to_dict()}
         raw["variant"]["base"]["plate"] = float(raw["variant"]["base"]["plate"])      # as Python might write it
         raw["variant"]["home"] = [float(h) for h in raw["variant"]["home"]]
-        record = V.sign(V.Variant.from_dict(raw["variant"]), "ana", SECRET)
+        record = V.sign_record(V.Variant.from_dict(raw["variant"]), "ana", SECRET)
         record["variant"] = raw["variant"]
         saved = json.loads(json.dumps(_as_javascript_saves_it(record)))
         assert V.verify(saved, "ana", SECRET).status == "ok"
@@ -209,7 +209,7 @@ def test_a_notebook_saved_by_jupyterlab_still_verifies():
 
 def test_signature_is_over_canonical_json():
     """Key order and spacing of the stored JSON do not matter; values do."""
-    rec = V.sign(V.variant("ur5", 3), "ana", SECRET)
+    rec = V.sign_record(V.variant("ur5", 3), "ana", SECRET)
     shuffled = json.loads(json.dumps(rec, sort_keys=False, indent=4))
     shuffled["variant"] = dict(reversed(list(shuffled["variant"].items())))
     assert V.verify(shuffled, "ana", SECRET).status == "ok"
@@ -217,9 +217,9 @@ def test_signature_is_over_canonical_json():
 
 def test_secrets():
     with pytest.raises(DHLabError, match="at least 16 bytes"):
-        V.sign(V.variant("kr5", 1), "ana", b"short")
+        V.sign_record(V.variant("kr5", 1), "ana", b"short")
     with pytest.raises(DHLabError, match="non-empty"):
-        V.sign(V.variant("kr5", 1), "", SECRET)
+        V.sign_record(V.variant("kr5", 1), "", SECRET)
     assert len(V.new_secret()) == 64 and V.new_secret() != V.new_secret()
 
 
@@ -262,7 +262,7 @@ def test_the_graders_valid_frames_accept_the_reference_and_random_answers(key):
             assert puma.is_valid_frame(robot, k, robot.home_frames[k])
             assert puma.fit_link(robot, k, robot.local_points(k))[1] < 1e-6
         for _ in range(4):                   # a prismatic axis's line moved too: its frames' families allow it
-            frames = random_valid_frames(robot, rng, slide=0.3)
+            frames = random_frames_from_axes(robot, rng, slide=0.3)
             assert all(puma.is_valid_frame(robot, k, F) for k, F in enumerate(frames))
             for k, F in enumerate(frames):
                 local = (robot.world_points(k) - F[:3, 3]) @ F[:3, :3]
@@ -287,7 +287,7 @@ def test_graded_against_its_own_variant_every_valid_answer_scores_full_marks(key
         assert report.score == 10, report.text()
         assert f"move like the {robot.name}" in report.text()
         for _ in range(4):
-            report = W.report(W.student_namespace(robot, random_valid_frames(robot, rng, slide=0.3)), robot)
+            report = W.report(W.student_namespace(robot, random_frames_from_axes(robot, rng, slide=0.3)), robot)
             assert report.score == 10, report.text()
 
 
@@ -363,7 +363,7 @@ def test_each_mistake_costs_exactly_its_item(key):
         robot = V.robot_of_variant(V.variant(key, seed))
         Q = np.vstack([np.zeros(robot.n)] + [[rng.uniform(max(lo, -3.0), min(hi, 3.0)) for lo, hi in robot.qlim]
                                              for _ in range(6)])
-        for frames in [robot.home_frames if seed == 2 else random_valid_frames(robot, rng, slide=0.3)]:
+        for frames in [robot.home_frames if seed == 2 else random_frames_from_axes(robot, rng, slide=0.3)]:
             rows = W.rows_in_degrees(robot, frames)
             ns = W.namespace_from_rows(robot, rows, frames)
             cases = [(part, what, changed) for part, what, changed in _other_mistakes(robot, ns)]

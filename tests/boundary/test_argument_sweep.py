@@ -29,13 +29,13 @@ import sympy as sp
 
 matplotlib.use("Agg")
 
-import dhlab  # noqa: E402
-from dhlab import DHLabError, DHRobot, MDHRobot, RevoluteDH, RevoluteMDH, robots, symbolic, transforms  # noqa: E402
-from dhlab.assignment import inputs as AI  # noqa: E402
-from dhlab.assignment import notebook as AS  # noqa: E402
-from dhlab.course import exercises as E  # noqa: E402
-from dhlab.course import exercises_dh as D  # noqa: E402
-from dhlab.mdh import PrismaticMDH, mdh_matrix, to_modified, to_modified_rows, to_standard, to_standard_rows  # noqa: E402
+import dhlab
+from dhlab import DHLabError, DHRobot, MDHRobot, RevoluteDH, RevoluteMDH, robots, symbolic, transforms
+from dhlab.assignment import inputs as AI
+from dhlab.assignment import notebook as AS
+from dhlab.course import exercises as E
+from dhlab.course import exercises_dh as D
+from dhlab.mdh import PrismaticMDH, mdh_matrix, to_modified, to_modified_rows, to_standard, to_standard_rows
 
 X = sp.Symbol("x")
 

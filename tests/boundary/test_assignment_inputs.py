@@ -14,7 +14,7 @@ import dhlab
 from dhlab import assignment as A
 from dhlab.assignment import answers as ans
 from dhlab.chain import Link, Robot, Rot
-from dhlab.validation import DHLabError
+from dhlab.errors import DHLabError
 
 q1, q2 = A.joint_variables(2)
 q3 = A.joint_variables(3)[2]

@@ -101,7 +101,7 @@ def test_sign_of_any_numeric_type_is_kept_as_an_int(sign):
 
 # --- values given in params go through the angle and length checks -----------------------------
 def test_params_angle_in_degrees_is_refused_with_the_fix():
-    robot = lambda: DHRobot([RevoluteDH(a=1.0, alpha=sp.Symbol("al"))], params={"al": 90})  # noqa: E731
+    robot = lambda: DHRobot([RevoluteDH(a=1.0, alpha=sp.Symbol("al"))], params={"al": 90})
     with pytest.raises(DHLabError, match=r"al from params.*more than a full turn.*deg2rad\(90\)"):
         robot()
 

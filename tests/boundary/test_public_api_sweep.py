@@ -894,14 +894,14 @@ def outcome(call: Call) -> tuple:
             if not any(w in low for w in EXPECTED_WORDS):
                 return UNCLEAR, f"does not say what was expected: {text}"
             return REFUSED, text
-        except Exception as error:      # noqa: BLE001 (what the sweep is looking for)
+        except Exception as error:
             call.seconds = time.perf_counter() - start
             return RAW, f"{type(error).__name__}: {error}"[:300]
         try:
             problem = call.check(result) if call.check else bad_numbers(result)
         except DHLabError as error:     # the result itself is broken (e.g. a robot whose fk refuses)
             problem = f"a result that fails later: {error}"
-        except Exception as error:      # noqa: BLE001
+        except Exception as error:
             problem = f"a result that breaks its check: {type(error).__name__}: {error}"[:300]
     call.seconds = time.perf_counter() - start
     if problem:
@@ -914,7 +914,7 @@ def outcome(call: Call) -> tuple:
 def _short(x):
     try:
         text = repr(x)
-    except Exception:       # noqa: BLE001
+    except Exception:
         text = type(x).__name__
     return text if len(text) < 100 else text[:97] + "..."
 

@@ -199,7 +199,7 @@ def test_what_is_right_next_to_them_still_works():
     assert len(sols) == 2
 
 
-# --- found by test_public_api_sweep.py -----------------------------------------------------------
+# --- values too large for a length: refused at the boundary, not overflowed ----------------------
 @pytest.mark.parametrize("value", [1e308, -1e308, 1e200])
 def test_a_prismatic_value_too_large_is_refused_not_overflowed(value):
     robot = robots.seed002_4dof()                       # joints 2 and 3 are prismatic

@@ -9,21 +9,21 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-import sympy as sp  # noqa: E402
-from hypothesis import given, settings  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
-import dhlab  # noqa: E402
-from dhlab import deg2rad, robots  # noqa: E402
-from dhlab.dh import DHRobot, PrismaticDH, RevoluteDH  # noqa: E402
-from dhlab.views.figures import new_figure  # noqa: E402
-from dhlab.views.spaces import spaces  # noqa: E402
-from dhlab.views.stepthrough import stepthrough, stepthrough_link  # noqa: E402
-from dhlab.views.teach import teach  # noqa: E402
-from dhlab.views.view import robot_view  # noqa: E402
+import dhlab
+from dhlab import deg2rad, robots
+from dhlab.dh import DHRobot, PrismaticDH, RevoluteDH
+from dhlab.views.figures import new_figure
+from dhlab.views.panels.spaces import spaces
+from dhlab.views.panels.stepthrough import stepthrough, stepthrough_link
+from dhlab.views.panels.teach import teach
+from dhlab.views.view import robot_view
 
 DHLabError = dhlab.DHLabError
 

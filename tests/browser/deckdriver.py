@@ -227,7 +227,7 @@ def drag_slider_in_deck(page, output) -> float:
     """The panel's first slider dragged with the mouse, inside the deck, as a lecturer does; the
     fraction of the figure's pixels changed. The focus stays on the slider's handle: the walk's next
     Space must still go on (it did not while the panel kept its sliders marked for good:
-    see dhlab/views/keys.js)."""
+    see dhlab/views/live/keys.js)."""
     from labdriver import changed_fraction
 
     figure = output.locator(FIGURE_SELECTOR).first
@@ -292,7 +292,7 @@ def check_deck(page, name: str, results_dir: Path, on_panel=None, slider_by: str
                 after = screen(page)
                 if after["active"] not in screen_before:
                     failures.append(f"{where}: moving the slider took the deck to cell {after['active']}")
-            except Exception as error:            # noqa: BLE001 - reported as a failure of the deck
+            except Exception as error:
                 state["moved"] = 0.0
                 found = page.evaluate("""(sel) => [...document.querySelectorAll(
                     '.jp-deck-mod-onscreen .jp-OutputArea-output')]

@@ -158,7 +158,7 @@ def switch_notebook(folder: Path, cells: list) -> Path:
 def test_projector_switch_in_jupyterlab(deck_page, lab_root, results_dir):
     """dhlab.projector() makes the page's text, code and widgets larger at once (no re-run), and
     projector(False) in a later cell restores every size, the earlier style included."""
-    switch_notebook(lab_root / "switch", ["import dhlab\nfrom dhlab.views.teach import teach\n"
+    switch_notebook(lab_root / "switch", ["import dhlab\nfrom dhlab.views.panels.teach import teach\n"
                                           "panel = teach(dhlab.robots.ssrms(), backend='image')\npanel",
                                           "dhlab.projector()", "dhlab.projector(False)"])
     page = deck_page
@@ -190,7 +190,7 @@ def test_projector_in_voila(browser, start_server, tmp_path, results_dir):
     """In Voilà (no deck) the switch is harmless: the page's text and the panel grow, nothing breaks."""
     if importlib.util.find_spec("voila") is None:
         pytest.skip("pip install voila")
-    switch_notebook(tmp_path, ["import dhlab\nfrom dhlab.views.teach import teach\ndhlab.projector()",
+    switch_notebook(tmp_path, ["import dhlab\nfrom dhlab.views.panels.teach import teach\ndhlab.projector()",
                                "panel = teach(dhlab.robots.ssrms(), backend='image')\npanel"])
     server = start_server(["voila", "projector_switch.ipynb", "--Voila.ip=127.0.0.1"], tmp_path, "/", timeout=120)
     page = browser.new_page(viewport={"width": DECK_WIDTH, "height": DECK_HEIGHT})

@@ -3,7 +3,7 @@
 Where the kernel has anywidget but the page does not (a hub whose JupyterLab runs in another
 environment than the course's kernel), the canvas backend's widget cannot be drawn: the page shows
 ipywidgets' error box instead of the figure. The kernel notices (canvas.js never says "loaded",
-dhlab/views/canvas.py ``watch_front_end``) and puts a PNG figure (the "image" backend) in its
+dhlab/views/live/canvas.py ``watch_front_end``) and puts a PNG figure (the "image" backend) in its
 place. Here: a second JupyterLab with anywidget's front end disabled (``page_config.json``, as
 ``jupyter labextension disable anywidget`` writes it), the SSRMS teach panel run in it: within
 seconds the figure is a picture of the robot, and a slider key changes it.

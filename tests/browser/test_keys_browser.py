@@ -2,7 +2,7 @@
 not dragged away.
 
 JupyterLab's shortcuts read a key before the page's widgets: the panel's invisible
-``SliderKeys`` widget (dhlab/views/keys.py + keys.js) puts ``data-lm-suppress-shortcuts`` on
+``SliderKeys`` widget (dhlab/views/live/keys.py + keys.js) puts ``data-lm-suppress-shortcuts`` on
 the focused slider while one of its own keys is dispatched, so no shortcut applies to that key.
 The test clicks a slider of the SSRMS teach panel *with the mouse* and checks that it then
 takes ArrowRight, ArrowUp, PageUp, ArrowLeft, PageDown, Home and End while the focus stays on

@@ -100,7 +100,7 @@ panel.run = _dhlab_timed_run
 _KERNEL_BREAKDOWN = """
 import json as _json, time as _time
 import numpy as _np
-from dhlab.views.livefigure import encode_png as _encode_png
+from dhlab.views.live.livefigure import encode_png as _encode_png
 def _median_ms(action, n=15):
     times = []
     for _ in range(n):

@@ -55,16 +55,16 @@ TARGET = {"key_median_ms": 33, "key_p90_ms": 50, "drag_fps": 30, "rotation_fps":
 # searched inside an output area: the canvas backend's <canvas> carries its own class
 FIGURE = (".jupyter-matplotlib-canvas-container canvas, .widget-image, canvas.dhlab-canvas")
 _results: dict = {}
-# how often the page lets a dragged slider tell the kernel (dhlab/views/rig.js)
-SLIDER_MESSAGE_MS = int(re.search(r"SLIDER_MESSAGE_MS = (\d+);", (Path(dhlab.__file__).parent / "views" / "rig.js")
-                                  .read_text()).group(1))
+# how often the page lets a dragged slider tell the kernel (dhlab/views/live/rig.js)
+RIG_JS = Path(dhlab.__file__).parent / "views" / "live" / "rig.js"
+SLIDER_MESSAGE_MS = int(re.search(r"SLIDER_MESSAGE_MS = (\d+);", RIG_JS.read_text()).group(1))
 
 
 def skip_unless_available(backend: str) -> None:
     """The canvas backend is measured once ``LiveFigure(backend="canvas")`` works here."""
     if backend != "canvas":
         return
-    from dhlab.views.livefigure import LiveFigure
+    from dhlab.views.live.livefigure import LiveFigure
 
     try:
         LiveFigure(figsize=(3, 3), backend="canvas").close()
@@ -218,7 +218,7 @@ def test_panel_holds_still_while_a_slider_sweeps(browser, lab_server, lab_root, 
 
 def test_the_robot_moves_while_the_kernel_runs_another_cell(browser, lab_server, lab_root, results_dir):
     """Canvas backend: with the kernel busy (a cell sleeping 10 s), arrow keys on a slider still
-    move the robot (the browser computes the pose: dhlab/views/rig.py); the kernel's readout
+    move the robot (the browser computes the pose: dhlab/views/live/rig.py); the kernel's readout
     follows once the cell ends."""
     skip_unless_available("canvas")
     page = labdriver.open_lab(browser, lab_server, 1400, 1000)

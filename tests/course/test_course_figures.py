@@ -12,20 +12,20 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
+import numpy as np
+import pytest
 
-from dhlab import robots  # noqa: E402
-from dhlab.course.exercises import (  # noqa: E402
+from dhlab import robots
+from dhlab.course.exercises import (
     four_axis_arm,
     row_exercise_frames,
-    seed001_DefinirTHz,  # noqa: E402
+    seed001_DefinirTHz,
 )
-from dhlab.course.lessons import figures_dh, figures_homogeneous, figures_ssrms  # noqa: E402
-from dhlab.dh_frames import joint_axes  # noqa: E402
-from dhlab.transforms import Rx, trans  # noqa: E402
-from dhlab.views.framing import projected  # noqa: E402
-from support.drawn_text import drawn, text_box, visible_texts  # noqa: E402
+from dhlab.course.lessons import figures_dh, figures_homogeneous, figures_ssrms
+from dhlab.dh_frames import joint_axes
+from dhlab.transforms import Rx, trans
+from dhlab.views.framing import projected
+from support.drawn_text import drawn, text_box, visible_texts
 
 ROT90 = np.array([[0.0, -1.0], [1.0, 0.0]])        # Rz(90°) in the plane, written out
 

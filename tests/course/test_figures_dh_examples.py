@@ -4,7 +4,7 @@ import pytest
 
 import dhlab
 from dhlab.course.lessons.figures_dh_examples import clip_segment, frame_pairs_figure, row_title
-from dhlab.validation import DHLabError
+from dhlab.errors import DHLabError
 from dhlab.views import framing
 from dhlab.views.layout import drawn_texts
 from dhlab.views.triads import LETTERS, draw_triad

@@ -14,8 +14,8 @@ from dhlab.course.lessons.lesson_dh_convention import (
     prismatic_a_lines,
     three_cases,
 )
+from dhlab.errors import DHLabError
 from dhlab.transforms import dh_matrix
-from dhlab.validation import DHLabError
 
 RNG = np.random.default_rng(11)
 

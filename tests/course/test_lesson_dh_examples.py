@@ -22,7 +22,7 @@ from dhlab.course.lessons.lesson_dh_examples import (
     wrist_centre_panel,
 )
 from dhlab.data import load as load_data
-from dhlab.validation import DHLabError
+from dhlab.errors import DHLabError
 
 PRINTED = load_data("seed002_printed_A")
 

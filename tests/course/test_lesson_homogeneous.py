@@ -6,8 +6,8 @@ import sympy as sp
 
 from dhlab.course.exercises import seed001_DefinirTHz
 from dhlab.course.lessons.lesson_homogeneous import fmt, matrix_text, seed001_rotation_block, seed002_A, seed004_eq1
+from dhlab.errors import DHLabError
 from dhlab.transforms import Rz, dh_matrix, trans
-from dhlab.validation import DHLabError
 
 theta, alpha, d, a, px, py, pz = sp.symbols("theta alpha d a p_x p_y p_z")
 

@@ -18,7 +18,7 @@ from dhlab.course.lessons.lesson_pr_mechanism import (
     pr_mechanism_figure,
     workspace_report,
 )
-from dhlab.validation import DHLabError
+from dhlab.errors import DHLabError
 
 
 @pytest.fixture(scope="module")

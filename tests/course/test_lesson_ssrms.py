@@ -12,9 +12,9 @@ from dhlab import robots
 from dhlab.course.lessons.lesson_ssrms import axis_relations, factors_latex, fmt, frames_table, same_axes, seed_words
 from dhlab.course.lessons.ssrms_program import CONFIGURAR_TH, seed001_frames
 from dhlab.data import load as load_data
+from dhlab.errors import DHLabError
 from dhlab.lines import relation
 from dhlab.transforms import Rx, trans
-from dhlab.validation import DHLabError
 
 SSRMS = robots.ssrms()
 CASES = {c["id"]: c for c in load_data("seed_cases")["cases"]}

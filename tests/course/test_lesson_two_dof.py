@@ -4,13 +4,13 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-import sympy as sp  # noqa: E402
+import numpy as np
+import pytest
+import sympy as sp
 
-from dhlab import deg2rad, robots  # noqa: E402
-from dhlab.course.lessons import lesson_two_dof as lesson  # noqa: E402
-from dhlab.validation import DHLabError  # noqa: E402
+from dhlab import deg2rad, robots
+from dhlab.course.lessons import lesson_two_dof as lesson
+from dhlab.errors import DHLabError
 
 l1, l2, l = sp.symbols("l1 l2 l")
 

@@ -15,8 +15,8 @@ from dhlab.course.predict import (
     row_prediction,
     step_prediction,
 )
+from dhlab.errors import DHLabError
 from dhlab.mdh import to_modified
-from dhlab.validation import DHLabError
 
 
 @pytest.fixture(scope="module")

@@ -10,17 +10,17 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
+import numpy as np
+import pytest
 
-from dhlab import robots  # noqa: E402
-from dhlab.course.exercises import four_axis_arm  # noqa: E402
-from dhlab.course.exercises.ssrms import printed_key_position  # noqa: E402
-from dhlab.course.lessons import figures_ssrms  # noqa: E402
-from dhlab.course.lessons.ssrms_program import KEYS, SeedProgram  # noqa: E402
-from dhlab.course.lessons.ssrms_steps import frames_b, x_steps, z_axes  # noqa: E402
-from dhlab.validation import DHLabError  # noqa: E402
-from support.drawn_text import drawn, text_box, visible_texts  # noqa: E402
+from dhlab import robots
+from dhlab.course.exercises import four_axis_arm
+from dhlab.course.exercises.ssrms import printed_key_position
+from dhlab.course.lessons import figures_ssrms
+from dhlab.course.lessons.ssrms_program import KEYS, SeedProgram
+from dhlab.course.lessons.ssrms_steps import frames_b, x_steps, z_axes
+from dhlab.errors import DHLabError
+from support.drawn_text import drawn, text_box, visible_texts
 
 NOTEBOOK = Path(__file__).resolve().parents[2] / "notebooks" / "07_ssrms.ipynb"
 SSRMS = robots.ssrms()

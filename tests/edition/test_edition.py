@@ -15,8 +15,8 @@ import pytest
 
 from tools import edition as ed
 from tools.edition import EDITION_NOTEBOOKS, NOTEBOOKS, Edition, EditionError
-from tools.edition_catalog import markdown_cells, read_catalog, write_catalog
-from tools.edition_text import anchor, headings, placeholder_difference, placeholders, relink
+from tools.edition_catalog import code_comments, markdown_cells, read_catalog, write_catalog
+from tools.edition_text import anchor, comments, headings, placeholder_difference, placeholders, relink, with_comments
 
 ROOT = Path(__file__).resolve().parents[2]
 REPO = Edition()
@@ -364,12 +364,13 @@ def test_headings_and_anchors():
 
 @pytest.mark.parametrize("stem", NOTEBOOKS)
 def test_every_english_notebook_round_trips_through_a_catalog(stem, tmp_path):
-    """extract writes each markdown cell's source exactly: read back, every cell is found by (id, text)."""
+    """extract writes each markdown cell's source and each code comment exactly: read back, every one is
+    found by (cell id, text)."""
     edition = Edition(english_dir=REPO.english_dir, spanish_dir=tmp_path / "es", catalog_dir=tmp_path,
                       shipped_dir=tmp_path / "shipped")
     edition.extract(stem)
     catalog = read_catalog(edition.catalog_path(stem))
-    cells = markdown_cells(edition.english(stem))
+    cells = markdown_cells(edition.english(stem)) + code_comments(edition.english(stem))
     assert len([m for m in catalog if m.id]) == len(cells)
     for cell_id, source in cells:
         assert catalog.get(source, context=cell_id) is not None, cell_id
@@ -405,13 +406,21 @@ def test_build_if_stale_rebuilds_only_what_changed_and_writes_the_home(edition, 
 ASSIGNMENT = "08_puma_assignment"
 
 
+def without_comments(source: str) -> str:
+    """A code cell's text with every comment cut (from its '#' to the end of its line)."""
+    return with_comments(source, {text: "" for text in comments(source)})
+
+
 def test_the_assignment_is_in_the_edition_and_its_code_is_the_english_code():
     assert ASSIGNMENT in EDITION_NOTEBOOKS
     english, spanish = REPO.english(ASSIGNMENT), REPO.spanish(ASSIGNMENT)
     code_en = [c.source for c in english.cells if c.cell_type == "code"]
     code_es = [c.source for c in spanish.cells if c.cell_type == "code"]
     assert ed.SET_LANGUAGE_ES in code_es[0] and ed.SET_LANGUAGE_EN in code_en[0]
-    assert code_es == [s.replace(ed.SET_LANGUAGE_EN, ed.SET_LANGUAGE_ES) for s in code_en]
+    # the same code, line for line, once the comments are taken out; the comments are Spanish
+    assert [without_comments(s) for s in code_es] == [without_comments(s.replace(ed.SET_LANGUAGE_EN,
+                                                                                 ed.SET_LANGUAGE_ES)) for s in code_en]
+    assert "# ESCRIBA SU CÓDIGO AQUÍ" in "\n".join(code_es) and "# YOUR CODE HERE" not in "\n".join(code_es)
     assert [c.metadata.get("nbgrader") for c in spanish.cells] == [c.metadata.get("nbgrader") for c in english.cells]
 
 

@@ -12,8 +12,8 @@ from pathlib import Path
 import pytest
 
 import dhlab
+from dhlab.errors import DHLabError
 from dhlab.i18n import _, get_language, language_from_env, set_language
-from dhlab.validation import DHLabError
 from tools import i18n_catalog
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -257,8 +257,8 @@ def test_a_table_feedback_in_spanish(spanish):
 def test_a_panel_readout_in_spanish(spanish):
     import numpy as np
 
-    from dhlab.views.stepthrough import motion_text
-    from dhlab.views.teach import pose_text
+    from dhlab.views.panels.stepthrough import motion_text
+    from dhlab.views.panels.teach import pose_text
     assert motion_text(1.5, 0.0, 2.0, 0.0, 0.0, "m") == \
         "<b>Paso 2 de 4: Tz(d)</b>, d = 2 m: trasladar d a lo largo de z<sub>i−1</sub>. Hecho: 50 %."
     assert pose_text(np.eye(4), "m").startswith("<b>Efector final</b> (<i>end effector</i>)<br>posición [m]")

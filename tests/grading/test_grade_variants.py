@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 
 from dhlab.assignment import variants as V
+from dhlab.assignment.notebook_cells import SEAM_CELL_ID, seam_source
 from dhlab.grading.book import grade_variants as GV
 from dhlab.grading.release import notebooks as R
 from dhlab.grading.run.staging import stage
@@ -51,17 +52,17 @@ def handed_in(released):
     """ana honest (another valid DH assignment than the reference's), bruno hands in carla's
     solved notebook, carla puts the published PUMA in her metadata and robot cell and solves
     that, dora strips the record and solves her own robot."""
-    from dhlab.assignment.model import random_valid_frames
+    from dhlab.assignment.model import random_frames_from_axes
     tmp, _, nbs = released
     folder = tmp / "submissions"
     ana = released_robot(nbs["ana"])
-    write(folder / "ana.ipynb", solved(nbs["ana"], ana, random_valid_frames(ana, np.random.default_rng(1))))
+    write(folder / "ana.ipynb", solved(nbs["ana"], ana, random_frames_from_axes(ana, np.random.default_rng(1))))
     write(folder / "bruno.ipynb", solved(nbs["carla"], released_robot(nbs["carla"])))
     published = V.variant("puma560", "from the textbook")
     forged = copy.deepcopy(nbs["carla"])
     forged["metadata"]["dhlab"]["variant"] = published.to_dict()
-    seam = next(c for c in forged["cells"] if c.get("id") == R.SEAM_CELL_ID)
-    seam["source"] = R.seam_source({"variant": published.to_dict(), "student_id": "carla"})
+    seam = next(c for c in forged["cells"] if c.get("id") == SEAM_CELL_ID)
+    seam["source"] = seam_source({"variant": published.to_dict(), "student_id": "carla"})
     write(folder / "carla.ipynb", solved(forged, V.robot_of_variant(published)))
     stripped = copy.deepcopy(nbs["dora"])
     del stripped["metadata"]["dhlab"]
@@ -155,11 +156,11 @@ def test_the_staged_copy_runs_the_verified_robot(class_setup, released, tmp_path
     that runs; a file the grader cannot attribute is not run at all."""
     _, _, nbs = released
     hacked = copy.deepcopy(nbs["ana"])
-    cell = next(c for c in hacked["cells"] if c.get("id") == R.SEAM_CELL_ID)
-    cell["source"] = R.seam_source(nbs["bruno"]["metadata"]["dhlab"])
+    cell = next(c for c in hacked["cells"] if c.get("id") == SEAM_CELL_ID)
+    cell["source"] = seam_source(nbs["bruno"]["metadata"]["dhlab"])
     write(tmp_path / "in" / "ana.ipynb", hacked)
     write(tmp_path / "in" / "who.ipynb", nbs["ana"])
-    resolve = lambda nb, file: GV.resolve(class_setup, nb, file)          # noqa: E731
+    resolve = lambda nb, file: GV.resolve(class_setup, nb, file)
     staged = stage(tmp_path / "in" / "ana.ipynb", tmp_path / "in", tmp_path, 0, resolve)
     code = "".join(c["source"] for c in json.loads(staged.copy.read_text())["cells"])
     ana_variant = json.dumps(nbs["ana"]["metadata"]["dhlab"]["variant"], sort_keys=True)

@@ -17,13 +17,14 @@ import pytest
 
 from dhlab import DHLabError
 from dhlab.assignment import variants as V
-from dhlab.grading.book import csvsafe
+from dhlab.grading import csvsafe
 from dhlab.grading.book import grade_variants as GV
 from dhlab.grading.book.gradebook import COLUMNS, VARIANT_COLUMNS, feedback_filename, read_csv, write_csv
 from dhlab.grading.export import lms
 from dhlab.grading.export.command import main as export
 from dhlab.grading.release import notebooks as R
 from dhlab.grading.release import roster
+from dhlab.grading.release.roster import read_roster, safe_filename
 
 SECRET = b"0123456789abcdef-the-teacher-secret"
 HOSTILE = ["=1+2", "+SUM(A1)", "-2+3", "@cmd", "\tx", "\rx", "'quoted", "''twice", "José", "ana"]
@@ -135,8 +136,8 @@ def test_spanish_roster_columns(tmp_path, capsys):
     roster = tmp_path / "lista.csv"
     roster.write_text("Identificador;Nombre;Apellidos;Correo\nana;Ana;García López;ana@uni.es\n"
                       "bruno;Bruno;Silva;bruno@uni.es\n", encoding="utf-8")
-    assert R.read_roster(roster) == ["ana", "bruno"]
-    assert R.read_roster(roster, id_column="correo") == ["ana@uni.es", "bruno@uni.es"]
+    assert read_roster(roster) == ["ana", "bruno"]
+    assert read_roster(roster, id_column="correo") == ["ana@uni.es", "bruno@uni.es"]
     gradebook = tmp_path / "gradebook.csv"
     write_csv(gradebook, [_row("ana"), _row("bruno", score="8")])
     out = tmp_path / "canvas.csv"
@@ -145,7 +146,7 @@ def test_spanish_roster_columns(tmp_path, capsys):
     assert names == {"García López, Ana", "Silva, Bruno"}
     other = tmp_path / "usuarios.csv"
     other.write_text("Nombre completo,Usuario\nAna García,ana\n", encoding="utf-8")
-    assert R.read_roster(other) == ["ana"]
+    assert read_roster(other) == ["ana"]
     column, records = lms.read_roster_rows(other)
     assert column == "Usuario" and lms._name(records["ana"]) == "Ana García"
 
@@ -237,7 +238,7 @@ def test_look_alike_ids_are_refused_naming_the_rows(tmp_path):
     roster = tmp_path / "roster.csv"
     roster.write_text(f"id\n{composed}\nana\n{decomposed}\n", encoding="utf-8")
     with pytest.raises(DHLabError, match=r"same name written two ways \(Unicode NFC and NFD\) \(rows 2 and 4\)"):
-        R.read_roster(roster)
+        read_roster(roster)
     with pytest.raises(DHLabError, match="same name written two ways"):
         lms.read_roster_rows(roster)
 
@@ -248,7 +249,7 @@ def test_ids_with_control_characters_are_refused(tmp_path, bad, char):
     roster = tmp_path / "roster.csv"
     roster.write_text(f"id\nbruno\n{bad}\n", encoding="utf-8")
     with pytest.raises(DHLabError, match=f"row 3: .* character {re.escape(char)}"):
-        R.read_roster(roster)
+        read_roster(roster)
     with pytest.raises(DHLabError, match=re.escape(char)):
         lms.read_roster_rows(roster)
 
@@ -256,8 +257,8 @@ def test_ids_with_control_characters_are_refused(tmp_path, bad, char):
 @pytest.mark.parametrize("sid", ["-rf", "--help", "nul.txt", "CON", "con", "com1.x", "LPT9.a.b", "aux.ipynb",
                                  "NUL .txt"])
 def test_release_file_names_are_safe(sid):
-    name = R.safe_filename(sid)
-    assert not name.startswith(("-", ".")) and R.safe_filename(sid) == name
+    name = safe_filename(sid)
+    assert not name.startswith(("-", ".")) and safe_filename(sid) == name
     device = name.split(".")[0].rstrip(" ").upper()
     assert device not in roster.RESERVED, name                              # Windows opens no device for it
 

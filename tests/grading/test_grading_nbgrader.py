@@ -18,7 +18,7 @@ import pytest
 
 pytest.importorskip("nbgrader")
 
-from dhlab.grading.release.generate import find_source  # noqa: E402  (after the skip: nbgrader is optional)
+from dhlab.grading.release.generate import find_source
 
 ROOT = Path(__file__).resolve().parents[2]
 SOURCE = find_source()            # the teacher's, with the solutions: computed, in a temporary folder
@@ -66,4 +66,28 @@ def test_nbgrader_generate_assignment_gives_our_student_notebook(course):
 
 def test_nbgrader_validate_passes_the_source_notebook(course):
     proc = _nbgrader("validate", str(course / "source" / "puma" / SOURCE.name), cwd=course)
+    assert "Success! Your notebook passes all the tests." in proc.stdout, proc.stdout[-2000:] + proc.stderr[-2000:]
+
+
+def test_a_spanish_source_gives_our_spanish_student_notebook(tmp_path):
+    """The Spanish solved notebook (dhlab-assign solutions --language es) through nbgrader with the Spanish
+    stub is what our generator makes of it: the same cells, the answers replaced by ``# ESCRIBA SU CÓDIGO AQUÍ``."""
+    from dhlab.assignment.solution import ANSWER_MARKERS
+    from dhlab.grading.release.generate import TEMPLATE, student_notebook
+    from dhlab.grading.release.solutions import puma_solutions
+    root = tmp_path / "course"
+    (root / "source" / "puma").mkdir(parents=True)
+    source = puma_solutions(json.loads(TEMPLATE.read_text(encoding="utf-8")), "es")
+    (root / "source" / "puma" / SOURCE.name).write_text(json.dumps(source), encoding="utf-8")
+    config = CONFIG.format(root=str(root)).replace("# YOUR CODE HERE", ANSWER_MARKERS["es"])
+    (root / "nbgrader_config.py").write_text(config, encoding="utf-8")
+    proc = _nbgrader("generate_assignment", "puma", "--no-db", "--force", cwd=root)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    release = json.loads((root / "release" / "puma" / SOURCE.name).read_text(encoding="utf-8"))
+    ours = student_notebook(source)
+    assert [(c["cell_type"], _source(c)) for c in release["cells"]] == [(c["cell_type"], _source(c))
+                                                                        for c in ours["cells"]]
+    code = "\n".join(_source(c) for c in ours["cells"] if c["cell_type"] == "code")
+    assert code.count(ANSWER_MARKERS["es"]) == 3 and ANSWER_MARKERS["en"] not in code
+    proc = _nbgrader("validate", str(root / "source" / "puma" / SOURCE.name), cwd=root)
     assert "Success! Your notebook passes all the tests." in proc.stdout, proc.stdout[-2000:] + proc.stderr[-2000:]

@@ -17,12 +17,13 @@ import pytest
 from dhlab.assignment import variants as V
 from dhlab.assignment.answers import parse_answers
 from dhlab.assignment.checks import check_all
+from dhlab.errors import DHLabError
 from dhlab.grading.book.gradebook import status_text
 from dhlab.grading.book.progress import summary as _summary
 from dhlab.grading.release import notebooks as R
+from dhlab.grading.release.comments import comments, with_comments
 from dhlab.grading.release.language import notebook_language, own_robot_text_es, raw_notebook_language
 from dhlab.i18n import _, speaking
-from dhlab.validation import DHLabError
 from support.solved_notebooks import released_robot, solved, write
 
 SECRET = b"grading-spanish-test-secret-0123456789"
@@ -51,6 +52,10 @@ def _markdown(nb):
 
 def _code(nb):
     return ["".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code"]
+
+
+def _no_comments(source):
+    return with_comments(source, {text: "" for text in comments(source)})
 
 
 # --- the release ----------------------------------------------------------------------------------------
@@ -83,7 +88,10 @@ def test_the_same_student_gets_the_same_robot_and_code_in_either_language(tmp_pa
         en, es = _nb(english, sid), _nb(spanish, sid)
         assert en["metadata"]["dhlab"]["variant"] == es["metadata"]["dhlab"]["variant"]
         assert [c.get("id") for c in en["cells"]] == [c.get("id") for c in es["cells"]]
-        assert _code(es) == [c.replace('dhlab.set_language("en")', 'dhlab.set_language("es")') for c in _code(en)]
+        # the same code once the comments are cut (they are translated), the set-up cell's language aside
+        assert [_no_comments(c) for c in _code(es)] == [
+            _no_comments(c.replace('dhlab.set_language("en")', 'dhlab.set_language("es")')) for c in _code(en)]
+        assert _code(es) != _code(en) and "# ESCRIBA SU CÓDIGO AQUÍ" in "\n".join(_code(es))
         assert _markdown(en) != _markdown(es)
 
 
@@ -295,6 +303,10 @@ def test_the_scores_do_not_depend_on_the_language(graded):
     assert rows["en_right"]["score"] == "10" and float(rows["en_wrong"]["score"]) < 10
     assert rows["en_blank"]["score"] == "0"
     assert rows["es_words"]["score"] == "10", feedback["es_words"]       # Spanish words where words are asked
+    # ... and quoted back as the student wrote them, never as the English canonical word
+    assert "x1: se intersecan" in feedback["es_words"] and "x2: paralelos" in feedback["es_words"]
+    assert not any(f"x{i}: {w}" in feedback["es_words"] for i in range(1, 6)
+                   for w in ("intersect", "parallel", "skew", "se cortan")), feedback["es_words"]
     assert "usted escribió" in feedback["es_wrong"] and "you wrote" in feedback["en_wrong"]
 
 
@@ -321,6 +333,14 @@ def test_the_help_of_both_commands_speaks_the_teachers_language(capsys):
     assert exit_.value.code == 0
     out = capsys.readouterr().out
     assert "carpeta de cuadernos entregados" in out and "el idioma del profesor" in out
+    # argparse's own words too, and the description
+    assert out.startswith("uso: dhlab-grade") and "argumentos posicionales:" in out and "opciones:" in out
+    assert "muestra esta ayuda" in out and "Califica una carpeta" in out
+    assert not any(w in out for w in ("usage:", "positional arguments", "options:", "show this help", "Grade a"))
+    with pytest.raises(SystemExit) as exit_:
+        cli.main(["puma", "--language", "es"])
+    assert exit_.value.code == 2
+    assert "dhlab-grade: error: se requieren los siguientes argumentos: submissions" in capsys.readouterr().err
     with pytest.raises(SystemExit):
         R.main(["release", "--help", "--language", "es"])
     assert "el idioma de los cuadernos" in capsys.readouterr().out
@@ -362,3 +382,19 @@ def test_dhlab_grade_export_speaks_the_teachers_language_too(tmp_path, capsys):
     assert code == 2 and "no es un libro de calificaciones escrito por dhlab-grade" in capsys.readouterr().err
     assert cli.main(["export", "moodle", str(empty), "--language", "xx"]) == 2
     assert "'xx'" in capsys.readouterr().err
+
+
+def test_the_grader_knows_the_spanish_release_cells(tmp_path):
+    """A Spanish notebook's locked cells (their comments are Spanish), its "Your robot" cell and its answer
+    cells are known to the grader as the English ones are: an error there is named the same way."""
+    from dhlab.grading.book.gradebook import Cells
+    _, out, _ = _release(tmp_path, "id\nana\n", "--language", "es", family="cobra600")
+    code = [(k, "".join(c["source"])) for k, c in enumerate(_nb(out, "ana")["cells"]) if c["cell_type"] == "code"]
+    cells = Cells(code)
+    by_first = {source.split("\n", 1)[0]: number for number, source in code}
+    seam = next(n for first, n in by_first.items() if first.startswith("# Su robot: sorteado para usted"))
+    assert cells.of_assignment(seam)
+    check = next(n for first, n in by_first.items() if first.startswith("# Comprobación de la parte 1"))
+    assert cells.of_assignment(check)
+    answer = next(n for first, n in by_first.items() if first.startswith("# Parte 2: escriba link_points"))
+    assert cells.answer_parts(answer) == ["part2"] and not cells.of_assignment(answer)

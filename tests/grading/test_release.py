@@ -6,7 +6,11 @@ import pytest
 
 from dhlab import DHLabError
 from dhlab.assignment import variants as V
+from dhlab.assignment.notebook_cells import SEAM_CELL_ID, prepare_submission, release_notebook, seam_source
+from dhlab.grading.options import DEFAULT_SECRET_FILE
 from dhlab.grading.release import notebooks as R
+from dhlab.grading.release.folder import load_teacher_records
+from dhlab.grading.release.roster import read_roster, safe_filename
 
 SECRET = b"0123456789abcdef-the-teacher-secret"
 
@@ -38,8 +42,8 @@ def test_release_writes_one_signed_notebook_per_student(class_folder):
     assert R.main(["release", str(roster), "-o", str(folder / "out"), "--secret-file", str(secret),
                    "--family", "all"]) == 0
     files = sorted(p.name for p in (folder / "out").glob("*.ipynb"))
-    assert files == sorted(["ana.ipynb", "bruno.ipynb", "cobra.ipynb", R.safe_filename("Ana María") + ".ipynb",
-                            R.safe_filename("Ana_María") + ".ipynb"])
+    assert files == sorted(["ana.ipynb", "bruno.ipynb", "cobra.ipynb", safe_filename("Ana María") + ".ipynb",
+                            safe_filename("Ana_María") + ".ipynb"])
     manifest = (folder / "out" / "_teacher" / "manifest.csv").read_text(encoding="utf-8-sig").splitlines()
     assert manifest[0] == "student_id,file,family,fingerprint,language" and len(manifest) == 6
     fingerprints = set()
@@ -51,7 +55,7 @@ def test_release_writes_one_signed_notebook_per_student(class_folder):
         check = V.verify(record, sid, SECRET)
         assert check.status == "ok" and record["student_id"] == sid
         fingerprints.add(V.fingerprint(check.variant))
-        seam = _code_cells(nb)[R.SEAM_CELL_ID]
+        seam = _code_cells(nb)[SEAM_CELL_ID]
         namespace = {"joint_variables": lambda n: tuple(range(n))}
         exec(seam, namespace)                      # the cell the student's kernel runs
         assert V.fingerprint(namespace["my_robot"]) == V.fingerprint(check.variant)
@@ -94,28 +98,28 @@ def test_bad_rosters_are_clear_errors(tmp_path, text, match):
     roster = tmp_path / "roster.csv"
     roster.write_text(text, encoding="utf-8")
     with pytest.raises(DHLabError, match=match):
-        R.read_roster(roster)
+        read_roster(roster)
 
 
 def test_roster_details(tmp_path):
     roster = tmp_path / "roster.csv"
     roster.write_text("\ufeffLogin;Name\n ana ;A\nbruno;B\n", encoding="utf-8")        # BOM, ';', spaces
-    assert R.read_roster(roster) == ["ana", "bruno"]
+    assert read_roster(roster) == ["ana", "bruno"]
     roster.write_text("matricula,name\nA1,x\n", encoding="utf-8")
-    assert R.read_roster(roster, id_column="Matricula") == ["A1"]
+    assert read_roster(roster, id_column="Matricula") == ["A1"]
     with pytest.raises(DHLabError, match="no column 'dni'"):
-        R.read_roster(roster, id_column="dni")
+        read_roster(roster, id_column="dni")
     roster.write_bytes("id\nJos\xe9\n".encode("latin-1"))
     with pytest.raises(DHLabError, match="not UTF-8"):
-        R.read_roster(roster)
+        read_roster(roster)
     with pytest.raises(DHLabError, match="cannot read the roster"):
-        R.read_roster(tmp_path / "missing.csv")
+        read_roster(tmp_path / "missing.csv")
 
 
 def test_safe_filenames_are_safe_and_distinct():
     ids = ["ana", "Ana", "Ana María", "Ana_María", "../../etc/passwd", "a/b", "CON", "李雷", "x" * 200, ".hidden",
            "ana maría", "ana\tmaría"]
-    names = [R.safe_filename(i) for i in ids]
+    names = [safe_filename(i) for i in ids]
     assert names[0] == "ana" and names[1] == "Ana"
     assert len(set(names)) == len(ids)
     for name in names:
@@ -141,7 +145,7 @@ def test_a_secret_is_made_when_none_is_given(tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "r.csv").write_text("id\nana\n", encoding="utf-8")
     assert R.main(["release", "r.csv", "-o", "out"]) == 0
-    key = tmp_path / R.DEFAULT_SECRET_FILE
+    key = tmp_path / DEFAULT_SECRET_FILE
     assert "never hand it out" in capsys.readouterr().err and oct(key.stat().st_mode)[-3:] == "600"
     first = (tmp_path / "out" / "ana.ipynb").read_bytes()
     assert R.main(["release", "r.csv", "-o", "out2"]) == 0        # the same key again
@@ -154,10 +158,10 @@ def test_a_changed_template_still_releases(tmp_path):
                           {"cell_type": "code", "id": "c", "metadata": {}, "outputs": [], "execution_count": None,
                            "source": ["from dhlab.course.assignment import joint_variables\n"]}],
                 "metadata": {}, "nbformat": 4, "nbformat_minor": 5}
-    record = V.sign(V.variant("ur5", 1), "ana", SECRET)
-    nb, notes = R.release_notebook(template, record, figures=False)
+    record = V.sign_record(V.variant("ur5", 1), "ana", SECRET)
+    nb, notes = release_notebook(template, record, figures=False)
     ids = [c["id"] for c in nb["cells"]]
-    assert ids[:3] == ["t", "c", "dhlab-your-robot-intro"] and R.SEAM_CELL_ID in ids
+    assert ids[:3] == ["t", "c", "dhlab-your-robot-intro"] and SEAM_CELL_ID in ids
     assert any("robot_figure" in n for n in notes) and nb["metadata"]["dhlab"] == record
 
 
@@ -167,7 +171,7 @@ def test_grader_seam_picks_the_right_variant(class_folder):
     folder, roster, secret = class_folder
     assert R.main(["release", str(roster), "-o", str(folder / "out"), "--secret-file", str(secret),
                    "--family", "all"]) == 0
-    teacher = R.load_teacher_records(folder / "out" / "_teacher" / "variants.json")
+    teacher = load_teacher_records(folder / "out" / "_teacher" / "variants.json")
     ana = json.loads((folder / "out" / "ana.ipynb").read_text(encoding="utf-8"))
     bruno = json.loads((folder / "out" / "bruno.ipynb").read_text(encoding="utf-8"))
     released = V.Variant.from_dict(teacher["ana"]["variant"])
@@ -186,13 +190,13 @@ def test_grader_seam_picks_the_right_variant(class_folder):
 
     # the student rewrote the robot cell to use a classmate's robot: the grader puts theirs back
     hacked = json.loads(json.dumps(ana))
-    cell = next(c for c in hacked["cells"] if c.get("id") == R.SEAM_CELL_ID)
-    cell["source"] = R.seam_source({"variant": teacher["bruno"]["variant"], "student_id": "ana"})
-    fixed = R.prepare_submission(hacked, released, "ana")
-    seams = [c for c in fixed["cells"] if c.get("id") == R.SEAM_CELL_ID]
+    cell = next(c for c in hacked["cells"] if c.get("id") == SEAM_CELL_ID)
+    cell["source"] = seam_source({"variant": teacher["bruno"]["variant"], "student_id": "ana"})
+    fixed = prepare_submission(hacked, released, "ana")
+    seams = [c for c in fixed["cells"] if c.get("id") == SEAM_CELL_ID]
     assert len(seams) == 1
     namespace = {"joint_variables": lambda n: tuple(range(n))}
     exec("".join(seams[0]["source"]), namespace)
     assert V.fingerprint(namespace["my_robot"]) == V.fingerprint(released)
-    gone = dict(ana, cells=[c for c in ana["cells"] if c.get("id") != R.SEAM_CELL_ID])
-    assert sum(c.get("id") == R.SEAM_CELL_ID for c in R.prepare_submission(gone, released, "ana")["cells"]) == 1
+    gone = dict(ana, cells=[c for c in ana["cells"] if c.get("id") != SEAM_CELL_ID])
+    assert sum(c.get("id") == SEAM_CELL_ID for c in prepare_submission(gone, released, "ana")["cells"]) == 1

@@ -24,8 +24,8 @@ import pytest
 import litedriver as driver
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "browser"))
-from labdriver import settled  # noqa: E402
-from screenrate import frames_during, install, key_presses, mouse_drag, stats  # noqa: E402
+from labdriver import settled
+from screenrate import frames_during, install, key_presses, mouse_drag, stats
 
 SSRMS = "07_ssrms.ipynb"
 SLIDER = ".widget-slider"

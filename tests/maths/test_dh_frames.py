@@ -45,7 +45,7 @@ def num(value, params=None):
 def rows(robot):
     """(θ or θ offset, d or d offset, a, α) per link, as floats (radians)."""
     out = []
-    num = lambda value: float(sp.sympify(value).subs(robot.params))   # noqa: E731
+    num = lambda value: float(sp.sympify(value).subs(robot.params))
     for link in robot.links:
         if link.is_revolute:
             out.append((num(link.offset), num(link.d), num(link.a), num(link.alpha)))

@@ -7,8 +7,8 @@ import pytest
 
 from dhlab import exercises_dh
 from dhlab.assignment import reference as puma
+from dhlab.errors import DHLabError
 from dhlab.lines import Line, LineRelation, closest_points, relation
-from dhlab.validation import DHLabError
 
 Z = Line((0, 0, 0), (0, 0, 1))                 # the z axis
 

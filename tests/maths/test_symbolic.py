@@ -1,6 +1,8 @@
 """Symbolic kinematics: the slides' A matrices and compact products."""
 import json
 import re
+import subprocess
+import sys
 
 import pytest
 import sympy as sp
@@ -48,6 +50,19 @@ def test_A_is_exact_for_degree_tables():
     """α = 90° typed in degrees gives exact 0/1 entries, not 6.1e-17."""
     A = robots.ssrms().A(1)
     assert A[2, 1] == -1 and A[1, 1] == 0 and A[2, 3] == sp.Rational(5, 2)
+
+
+def test_ssrms_is_built_and_moved_without_sympy_and_made_exact_on_first_symbolic_use():
+    """The browser edition's first slider waits for what building the SSRMS imports: its table is all
+    numbers, so building it, moving it and printing its table import no sympy; A(i) then does, exactly."""
+    code = ("import sys, dhlab\n"
+            "arm = dhlab.robots.ssrms()\n"
+            "arm.fk(arm.qz), arm.frames(arm.qz), arm.A(1, 0.5), str(arm.table()), arm.reach()\n"
+            "assert 'sympy' not in sys.modules, 'building or moving the SSRMS imported sympy'\n"
+            "print(arm.A(1)[2, 3], arm.A(1)[2, 1])\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["5/2", "-1"]
 
 
 VERIFIED_SSRMS_P = {   # VERIFIED_MATH.md §6.4, written with C/S names

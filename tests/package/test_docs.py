@@ -75,7 +75,7 @@ OUTPUTS = ("benchmarks/results/", "tests/browser/results/", "build/", "docs/_bui
 
 @pytest.mark.parametrize("page", [README, *PAGES], ids=lambda p: str(p.relative_to(ROOT)))
 def test_repository_paths_named_in_code_exist(page):
-    """A page that names `dhlab/views/rig.py` or `tests/maths/test_mdh.py` in code names a file that is there
+    """A page that names `dhlab/views/live/rig.py` or `tests/maths/test_mdh.py` in code names a file that is there
     (a module or a test moved since the page was written fails here)."""
     text = re.sub(r"```.*?```", "", page.read_text(encoding="utf-8"), flags=re.S)
     paths = {word.strip("(),;:.") for span in re.findall(r"`([^`\n]+)`", text) for word in span.split()}

@@ -11,8 +11,12 @@ import dhlab
 
 
 def test_panel_functions_are_not_shadowed_by_their_modules():
+    import pytest
+
     for module in ("dhlab.teach", "dhlab.spaces", "dhlab.stepthrough", "dhlab.view"):
-        importlib.import_module(module)
+        sys.modules.pop(module, None)          # (the old name only: the module at its new place stays)
+        with pytest.warns(DeprecationWarning, match="moved to"):    # old paths: they warn
+            importlib.import_module(module)
     assert callable(dhlab.teach) and callable(dhlab.spaces)
     assert callable(dhlab.stepthrough) and callable(dhlab.stepthrough_link) and callable(dhlab.robot_view)
 
@@ -44,9 +48,13 @@ NOT_AT_IMPORT = ("dhlab.course", "dhlab.assignment", "dhlab.grading", "dhlab.vie
                  "mpl_toolkits.mplot3d", "matplotlib.pyplot", "ipywidgets")
 
 # the old module paths (notebooks and scripts written before the split) and where they live now
-OLD_PATHS = {"dhlab.teach": "dhlab.views.teach", "dhlab.view": "dhlab.views.view",
-             "dhlab.livefigure": "dhlab.views.livefigure", "dhlab.panel": "dhlab.views.panel",
-             "dhlab.spaces": "dhlab.views.spaces", "dhlab.stepthrough": "dhlab.views.stepthrough",
+OLD_PATHS = {"dhlab.teach": "dhlab.views.panels.teach", "dhlab.view": "dhlab.views.view",
+             "dhlab.livefigure": "dhlab.views.live.livefigure", "dhlab.panel": "dhlab.views.panels.panel",
+             "dhlab.spaces": "dhlab.views.panels.spaces", "dhlab.stepthrough": "dhlab.views.panels.stepthrough",
+             **{f"dhlab.views.{name}": f"dhlab.views.live.{name}" for name in (
+                 "livefigure", "backend", "notebook_cell", "ipympl_canvas", "canvas", "scene", "rig", "keys", "png")},
+             **{f"dhlab.views.{name}": f"dhlab.views.panels.{name}"
+                for name in ("panel", "teach", "stepthrough", "spaces")},
              "dhlab.exercises": "dhlab.course.exercises", "dhlab.exercises_dh": "dhlab.course.exercises",
              "dhlab.course.exercises_dh": "dhlab.course.exercises",
              "dhlab.course.assignment": "dhlab.assignment.notebook",
@@ -98,6 +106,35 @@ def test_every_old_module_path_imports_as_the_module_at_its_new_place():
         "from dhlab.assign import dh_from_axes\n"
         "from dhlab.course.assignment import Tz\n")
     assert out.returncode == 0, out.stderr
+
+
+def test_old_paths_warn_where_they_are_imported_except_the_released_notebooks():
+    """A developer's old path warns at the line that imports it; a released notebook's never warns."""
+    out = run_python(
+        "import warnings\n"
+        "warnings.simplefilter('always')\n"
+        "with warnings.catch_warnings(record=True) as seen:\n"
+        "    from dhlab.views.teach import teach\n"
+        "    import dhlab.assign.frames\n"
+        "    from dhlab.course.assignment import Tz\n"
+        "    from dhlab.course.family_notebook import use_variant\n"
+        "for w in seen:\n"
+        "    print(w.category.__name__, w.filename, w.lineno, str(w.message).split(':')[0])\n")
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.splitlines() == [
+        "DeprecationWarning <string> 4 dhlab.views.teach moved to dhlab.views.panels.teach",
+        "DeprecationWarning <string> 5 dhlab.assign moved to dhlab.dh_frames",
+        "DeprecationWarning <string> 5 dhlab.assign.frames moved to dhlab.dh_frames.frames"]
+
+
+def test_the_course_itself_never_imports_an_old_path():
+    """Every module of the package, imported with DeprecationWarning as an error, imports."""
+    out = run_python(
+        "import importlib, pkgutil, warnings, dhlab\n"
+        "warnings.simplefilter('error', DeprecationWarning)\n"
+        "for m in pkgutil.walk_packages(dhlab.__path__, 'dhlab.'):\n"
+        "    importlib.import_module(m.name)\n")
+    assert out.returncode == 0, out.stderr[-2000:]
 
 
 def test_python_m_dhlab_grade_still_runs_the_grader():
@@ -162,7 +199,7 @@ def imports_of(path: Path, modules: set) -> list:
             targets = [f"{base}.{alias.name}" if f"{base}.{alias.name}" in modules else base for alias in node.names]
         for target in targets:
             while target and target not in modules and "." in target:
-                target = target.rpartition(".")[0]          # ``import dhlab.views.teach as t`` and the like
+                target = target.rpartition(".")[0]          # ``import dhlab.views.panels.teach as t`` and the like
             if target in modules and target != name:
                 found.append((node.lineno, target))
     return found

@@ -11,10 +11,10 @@ from matplotlib.patches import Circle
 from PIL import Image
 
 import dhlab
-from dhlab.validation import DHLabError
-from dhlab.views import backend, notebook_cell
-from dhlab.views.livefigure import LiveFigure, choose_backend
-from dhlab.views.scene import Unsupported, describe_scene
+from dhlab.errors import DHLabError
+from dhlab.views.live import backend, notebook_cell
+from dhlab.views.live.livefigure import LiveFigure, choose_backend
+from dhlab.views.live.scene import Unsupported, describe_scene
 
 
 class Recorder:
@@ -264,7 +264,7 @@ def test_faces_of_a_ragged_poly3dcollection_on_this_matplotlib():
     from matplotlib.figure import Figure
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-    from dhlab.views.scene import faces3d
+    from dhlab.views.live.scene import faces3d
 
     ax = Figure().add_subplot(projection="3d")
     polys = ax.add_collection3d(Poly3DCollection(_ragged_faces()))
@@ -280,7 +280,7 @@ def test_faces_as_matplotlib_3_8_keeps_them():
     ``_vec`` cut by ``_segslices`` and has no ``_faces``: faces3d reads that layout too."""
     from types import SimpleNamespace
 
-    from dhlab.views.scene import faces3d
+    from dhlab.views.live.scene import faces3d
 
     points = np.vstack(_ragged_faces())
     old = SimpleNamespace(_vec=np.vstack([points.T, np.ones(len(points))]),

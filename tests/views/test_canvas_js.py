@@ -18,13 +18,13 @@ import pytest
 from mpl_toolkits.mplot3d import proj3d
 
 import dhlab
-from dhlab.views.scene import axes_camera, describe_scene, faces3d
+from dhlab.views.live.scene import axes_camera, describe_scene, faces3d
 from dhlab.views.view import robot_view
 
 NODE = shutil.which("node")
 pytestmark = pytest.mark.skipif(NODE is None, reason="node (JavaScript) is not installed: the browser "
                                 "layer's maths cannot be checked here")
-MODULE = Path(dhlab.__file__).parent / "views" / "canvas.js"
+MODULE = Path(dhlab.__file__).parent / "views" / "live" / "canvas.js"
 
 # reads {"calls": [[name, args...], ...]} on stdin, prints the results as JSON
 _RUNNER = """

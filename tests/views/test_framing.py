@@ -5,12 +5,12 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
+import numpy as np
+import pytest
 
-from dhlab import robots  # noqa: E402
-from dhlab.views import framing  # noqa: E402
-from dhlab.views.teach import teach  # noqa: E402
+from dhlab import robots
+from dhlab.views import framing
+from dhlab.views.panels.teach import teach
 
 
 def seen(panel):

@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import dhlab
-from dhlab.validation import DHLabError
+from dhlab.errors import DHLabError
 from dhlab.views.matrices import COLUMN_PX, latex_width_px, show_matrix
 
 # Outputs of the stored notebooks whose rendered width was measured in JupyterLab 4 (Chromium,

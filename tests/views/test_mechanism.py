@@ -5,7 +5,7 @@ import pytest
 
 import dhlab
 from dhlab import robots
-from dhlab.validation import DHLabError
+from dhlab.errors import DHLabError
 from dhlab.views import triads
 from dhlab.views.mechanism import CYLINDER_HALF, Mechanism
 from dhlab.views.view import robot_view
@@ -147,7 +147,7 @@ def test_triads_are_sized_from_the_robot():
 def test_frame_labels_keep_off_the_joints(name):
     """No frame label is drawn over a joint's solid or the gripper (their outline points)."""
     from dhlab.views import framing
-    from dhlab.views.teach import teach
+    from dhlab.views.panels.teach import teach
 
     robot = robots.catalogue()[name]()
     panel = teach(robot, backend="image")

@@ -15,13 +15,13 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
+import numpy as np
+import pytest
 
-import dhlab  # noqa: E402
-from dhlab.views.spaces import spaces  # noqa: E402
-from dhlab.views.stepthrough import stepthrough  # noqa: E402
-from dhlab.views.teach import teach  # noqa: E402
+import dhlab
+from dhlab.views.panels.spaces import spaces
+from dhlab.views.panels.stepthrough import stepthrough
+from dhlab.views.panels.teach import teach
 
 
 def tree(widget, path="panel"):
@@ -111,7 +111,7 @@ def test_spaces_panel_holds_still():
 
 def test_fixed_shape_sees_a_cell_that_grows():
     """The check can fail: a table of auto layout, or a row more, is a change of shape."""
-    from dhlab.views.teach import matrix_html
+    from dhlab.views.panels.teach import matrix_html
 
     assert fixed_shape(matrix_html(np.eye(4))) == fixed_shape(matrix_html(-30 * np.ones((4, 4))))
     with pytest.raises(AssertionError):

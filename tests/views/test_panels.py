@@ -5,13 +5,20 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
+import numpy as np
+import pytest
 
-import dhlab  # noqa: E402
-from dhlab import robots  # noqa: E402
-from dhlab.views.spaces import spaces, wrap_into_limits  # noqa: E402
-from dhlab.views.stepthrough import dh_params, dh_partial, line_in_box, motion_text, stepthrough, stepthrough_link  # noqa: E402
+import dhlab
+from dhlab import robots
+from dhlab.views.panels.spaces import spaces, wrap_into_limits
+from dhlab.views.panels.stepthrough import (
+    dh_params,
+    dh_partial,
+    line_in_box,
+    motion_text,
+    stepthrough,
+    stepthrough_link,
+)
 
 
 # --- the step-through -------------------------------------------------------------------

@@ -21,15 +21,16 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-from matplotlib.text import Text  # noqa: E402
-from mpl_toolkits.mplot3d import proj3d  # noqa: E402
+import numpy as np
+import pytest
+from matplotlib.text import Text
+from mpl_toolkits.mplot3d import proj3d
 
-from dhlab import robots  # noqa: E402
-from dhlab.views import framing  # noqa: E402
-from dhlab.views.figures import new_figure, projector  # noqa: E402
-from dhlab.views.teach import teach  # noqa: E402
+from dhlab import robots
+from dhlab.views import framing
+from dhlab.views.figures import new_figure
+from dhlab.views.figures import set_figure_scale as projector
+from dhlab.views.panels.teach import teach
 
 CATALOGUE = robots.catalogue()
 RANDOM_POSES = 10
@@ -239,8 +240,8 @@ def test_spaces_and_stepthrough_pictures_at_the_notebooks_sizes(scale):
     import functools
 
     import dhlab
-    from dhlab.views.spaces import spaces
-    from dhlab.views.stepthrough import stepthrough_link
+    from dhlab.views.panels.spaces import spaces
+    from dhlab.views.panels.stepthrough import stepthrough_link
 
     pr = robots.pr_mechanism()
     panel = spaces(pr, ik=functools.partial(dhlab.ik.pr_mechanism_ik, pr), q=[0.566987, dhlab.deg2rad(30)],

@@ -10,10 +10,11 @@ import re
 import pytest
 
 import dhlab
-from dhlab.validation import DHLabError
-from dhlab.views import figures, panel
+from dhlab.errors import DHLabError
+from dhlab.views import figures
 from dhlab.views import projector as projector_module
 from dhlab.views.figures import new_figure
+from dhlab.views.panels import panel
 from dhlab.views.projector import DEFAULT_SCALE, PAGE_PX, SLIDE_FIGURE_PX, WIDGETS_PX, stylesheet, widgets_scale
 
 WIDGET_TEXT_PX = 13          # ipywidgets' text at normal size: what the panels' em widths are measured in

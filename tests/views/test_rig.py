@@ -18,11 +18,11 @@ import numpy as np
 import pytest
 
 import dhlab
-from dhlab.views.rig import nodes, program_steps
+from dhlab.views.live.rig import nodes, program_steps
 
 NODE = shutil.which("node")
 needs_node = pytest.mark.skipif(NODE is None, reason="node (JavaScript) is not installed")
-RIG_JS = Path(dhlab.__file__).parent / "views" / "rig.js"
+RIG_JS = Path(dhlab.__file__).parent / "views" / "live" / "rig.js"
 
 _RUNNER = """
 import * as m from %s;
@@ -81,7 +81,7 @@ def test_the_browser_chain_is_pythons():
 
 def scene(panel):
     """The scene the kernel sends now (content, float32 numbers) and the moving artists."""
-    from dhlab.views.scene import describe_scene
+    from dhlab.views.live.scene import describe_scene
 
     live = panel.view.live
     content, numbers = describe_scene(live.figure, live.moving)
@@ -282,7 +282,7 @@ def frozen_clock(monkeypatch):
     it by hand (``live.last_refresh -= 1.0``) to make a pause."""
     from types import SimpleNamespace
 
-    from dhlab.views import livefigure
+    from dhlab.views.live import livefigure
 
     monkeypatch.setattr(livefigure, "time", SimpleNamespace(monotonic=lambda: 1000.0))
 
@@ -299,7 +299,8 @@ def test_a_drag_frames_a_leaving_robot_again_at_most_once_a_second(monkeypatch):
     up with the drag; the rest (a robot grown small in its frame) waits, and at rest the view is framed."""
     from types import SimpleNamespace
 
-    from dhlab.views import framing, livefigure
+    from dhlab.views import framing
+    from dhlab.views.live import livefigure
 
     clock = [1000.0]
     monkeypatch.setattr(livefigure, "time", SimpleNamespace(monotonic=lambda: clock[0]))

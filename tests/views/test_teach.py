@@ -5,16 +5,16 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import ipywidgets as widgets  # noqa: E402
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-from ipywidgets.widgets.widget import _instances  # noqa: E402  (every live widget)
+import ipywidgets as widgets
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+from ipywidgets.widgets.widget import _instances
 
-import dhlab  # noqa: E402
-from dhlab import robots  # noqa: E402
-from dhlab.views import notebook_cell  # noqa: E402
-from dhlab.views.teach import teach  # noqa: E402
+import dhlab
+from dhlab import robots
+from dhlab.views.live import notebook_cell
+from dhlab.views.panels.teach import teach
 
 
 def numbers(html, *names):

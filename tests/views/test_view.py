@@ -3,14 +3,14 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
 
-import dhlab  # noqa: E402
-from dhlab import robots  # noqa: E402
-from dhlab.views.livefigure import LiveFigure, encode_png  # noqa: E402
-from dhlab.views.view import RobotView2D, RobotView3D, robot_view, triad_segments, workspace_box  # noqa: E402
+import dhlab
+from dhlab import robots
+from dhlab.views.live.livefigure import LiveFigure, encode_png
+from dhlab.views.view import RobotView2D, RobotView3D, robot_view, triad_segments, workspace_box
 
 ROBOTS_3D = [robots.ssrms, robots.puma560, robots.seed002_4dof, robots.seed003_6dof, robots.rrr_example]
 ROBOTS_2D = [robots.robot_no_tan_elemental_1, robots.robot_no_tan_elemental_2, robots.pr_mechanism]

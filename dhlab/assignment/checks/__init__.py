@@ -41,10 +41,11 @@ Part 1 (the sketch): 0/2 points, not answered
 from __future__ import annotations
 
 import html
+import re
 from dataclasses import dataclass, field
 
 from ...i18n import N_, _, case_word
-from ..answers import NOT_ANSWERED, Answers, Row, Unreadable
+from ..answers import NOT_ANSWERED, Answers, Row, Unreadable, written_case
 from ..family import shown_name
 from ..reference import reference, relation
 from .analysis import Analysis, Item, matrix, rows_of
@@ -55,6 +56,7 @@ from .transforms import analyse
 __all__ = ["POINTS", "TITLES", "Item", "PartResult", "Report", "check_part1", "check_part2", "check_part3",
            "check_all", "reading", "analysis_of", "rows_of", "matrix", "random_configurations", "chain_matches"]
 
+LETTER = re.compile(r"[^\W\d_]")        # a word, not a case's number
 POINTS = {"part1": 2, "part2": 3, "part3": 5}
 TITLES = {"part1": N_("the sketch"), "part2": N_("each link in its own frame"),
           "part3": N_("the transformations and their chain")}
@@ -202,13 +204,15 @@ def check_part1(answers: Answers, ref=None) -> PartResult:
             items.append(Item(label, False, cases.why))
         elif isinstance(cases[i - 1], Unreadable):     # one word not read: this item's slip, not the list's
             items.append(Item(label, False, cases[i - 1].why))
-        elif cases[i - 1] in accepted:
-            items.append(Item(f"{label}: {case_word(cases[i - 1])}", True))
+        elif cases[i - 1] in accepted:         # the student's own words, quoted back (a number: the case's)
+            wrote = written_case(cases[i - 1])
+            shown = wrote if LETTER.search(wrote) else case_word(cases[i - 1])
+            items.append(Item(f"{label}: {shown}", True))
         else:
             items.append(Item(label, False, _("you wrote {case!r}: look again at the axes of joints {i} and {next} "
                                               "(z{previous} and z{i}) in the table: are their directions parallel and, "
                                               "if not, do the two lines meet?").format(
-                case=cases[i - 1], i=i, next=i + 1, previous=i - 1)))
+                case=written_case(cases[i - 1]), i=i, next=i + 1, previous=i - 1)))
     part = PartResult("part1", items)
     if isinstance(cases, list) and len(cases) != n - 1:
         part.notes.append(_("(x_cases has {count} entries: give one for each i = 1…{last}; the last frame's x{n} "
@@ -225,7 +229,7 @@ def analysis_of(answers: Answers, ref=None) -> Analysis:
 
 
 
-def _chain_item(answers: Answers, rows, n: int) -> Item:
+def _chain_item(answers: Answers, n: int) -> Item:
     """The chain must be the product of your T1…Tn, in this order (a factor stands for
     T_k when the variable T_k itself is missing)."""
     chain = answers.chain
@@ -252,7 +256,7 @@ def check_part3(answers: Answers, analysis: Analysis | None = None, ref=None) ->
     and the chain."""
     analysis = analysis or analysis_of(answers, ref)
     ref = analysis.ref
-    items = analysis.items + [_chain_item(answers, analysis.rows, ref.n)]
+    items = analysis.items + [_chain_item(answers, ref.n)]
     part = PartResult("part3", items)
     if analysis.structural_ok and all(item.ok for item in analysis.items):
         match = chain_matches(analysis.rows, ref=ref)

@@ -19,8 +19,9 @@ from __future__ import annotations
 
 import html
 
+from ...dh_frames.reading import short_repr  # the checks' messages name an answer as dh_frames' errors do
+from ...errors import DHLabError
 from ...i18n import N_, _
-from ...validation import DHLabError
 
 __all__ = ["Feedback", "Exercise", "NOT_ANSWERED", "short_repr"]
 
@@ -81,16 +82,6 @@ def wrong(name, items) -> Feedback:
 
 def unanswered(name) -> Feedback:
     return Feedback("unanswered", f"{name}: {_(NOT_ANSWERED)}")
-
-
-def short_repr(x, width: int = 60) -> str:
-    """``repr(x)`` cut to ``width`` characters for a message. Never raises: an answer whose repr
-    fails (a list nested thousands deep, a broken ``__repr__``) is named by its type."""
-    try:
-        text = repr(x)
-    except Exception:                     # RecursionError, or whatever a student's __repr__ raises
-        text = _("<a {type} that cannot be printed>").format(type=type(x).__name__)
-    return text if len(text) <= width else text[:width - 3] + "…"
 
 
 def _describe(answer) -> str:

@@ -20,8 +20,9 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from ...errors import DHLabError
 from ...i18n import N_, _
-from ...validation import DHLabError, as_sequence, as_text, as_tolerance, describe
+from ...validation import as_sequence, as_text, as_tolerance, describe
 from .reading import Refused, to_sympy_matrix, to_vector
 
 __all__ = ["tolerance", "names", "units", "expected_matrix", "expected_vector", "expected_solutions",

@@ -48,8 +48,8 @@ from __future__ import annotations
 
 import difflib
 
+from ...errors import DHLabError
 from ...i18n import _
-from ...validation import DHLabError
 from ..checks.feedback import NOT_ANSWERED, Exercise, Feedback
 from ..checks.matrix import TRANSPOSED_ROTATION, check_function, check_matrix
 from ..checks.values import check_solutions, check_value

@@ -16,10 +16,11 @@ import numpy as np
 
 from ...chain import Robot
 from ...dh import DHRobot
+from ...errors import DHLabError
 from ...i18n import _
 from ...lines import Line, relation
 from ...mdh import MDHRobot
-from ...validation import DHLabError, as_index, as_tolerance, describe
+from ...validation import as_index, as_tolerance, decimal_comma_note, describe
 from ..checks.feedback import Feedback, short_repr
 from ..checks.reading import Refused, to_vector
 
@@ -82,7 +83,10 @@ def read_numbers(answer, count: int, what: str):
     try:
         values = to_vector(answer, _("your answer"), count)
     except Refused as why:
-        return None, _("{why} Give {count} numbers {what}.").format(why=why, count=count, what=what)
+        problem = _("{why} Give {count} numbers {what}.").format(why=why, count=count, what=what)
+        if str(why).find(decimal_comma_note(answer, count) or "\0") < 0:     # (unless the reason says it)
+            problem = " ".join(filter(None, [problem, decimal_comma_note(answer, count)]))
+        return None, problem
     if isinstance(values, list):          # sympy expressions with symbols in them
         return None, _("give {count} numbers {what}, not symbols.").format(count=count, what=what)
     return [float(v) for v in values], ""

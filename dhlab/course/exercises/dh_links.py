@@ -8,10 +8,11 @@ import sympy as sp
 
 from ... import robots
 from ...dh import DHRobot
+from ...errors import DHLabError
 from ...i18n import N_, _
 from ...mdh import mdh_matrix
 from ...transforms import dh_matrix
-from ...validation import DHLabError, as_index, as_vector, has_angle_mark
+from ...validation import as_index, as_vector, has_angle_mark
 from ..checks.feedback import Exercise, Feedback, unanswered
 from ..checks.matrix import check_matrix
 from ..checks.reading import is_unanswered

@@ -10,10 +10,11 @@ import math
 
 import numpy as np
 
+from ...errors import DHLabError
 from ...i18n import N_, _
 from ...mdh import mdh_matrix
 from ...transforms import Rx, Rz, dh_matrix, trans
-from ...validation import DHLabError, as_matrix4, describe, rigid_problem
+from ...validation import as_matrix4, describe, rigid_problem
 from ..checks.case_words import CASE_NUMBERS as _CASE_NUMBERS
 from ..checks.case_words import read_case_words
 from ..checks.feedback import Exercise, Feedback, unanswered

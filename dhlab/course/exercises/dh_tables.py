@@ -15,11 +15,11 @@ import sympy as sp
 
 from ... import robots
 from ...dh import DHRobot
+from ...errors import DHLabError
 from ...i18n import N_, _
 from ...lines import Line, closest_points
 from ...mdh import MDHRobot, to_standard
 from ...validation import (
-    DHLabError,
     as_flag,
     as_length,
     as_matrix4,
@@ -27,6 +27,7 @@ from ...validation import (
     as_text,
     as_vector,
     check_length_size,
+    decimal_comma_note,
     describe,
 )
 from ..checks.feedback import Exercise, Feedback, unanswered
@@ -255,7 +256,8 @@ def _row_problem(rows) -> str:
             return _("row {k} must be a tuple (θ, d, a, α), not {type} {value}.").format(
                 k=k, type=type(row).__name__, value=quoted(row))
         if len(row) != 4:
-            return _("row {k} has {n} entries; a DH row has 4: (θ, d, a, α).").format(k=k, n=len(row))
+            problem = _("row {k} has {n} entries; a DH row has 4: (θ, d, a, α).").format(k=k, n=len(row))
+            return " ".join(filter(None, [problem, decimal_comma_note(row, 4)]))
         for column, value in zip("θdaα", row):
             if isinstance(value, str):
                 continue                      # a joint variable or a length by name, read by from_table

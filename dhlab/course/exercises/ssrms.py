@@ -5,9 +5,10 @@ import numpy as np
 
 from ... import robots
 from ...dh import DHRobot
+from ...errors import DHLabError
 from ...i18n import N_, _
 from ...transforms import trans
-from ...validation import DHLabError, as_index, describe
+from ...validation import as_index, describe
 from ..checks.feedback import Exercise, Feedback, short_repr, unanswered
 from ..checks.reading import is_unanswered
 from ..checks.values import check_value

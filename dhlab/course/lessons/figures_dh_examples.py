@@ -5,8 +5,9 @@ import math
 
 import numpy as np
 
+from ...errors import DHLabError
 from ...i18n import _
-from ...validation import DHLabError, as_length, as_text, describe
+from ...validation import as_length, as_text, describe
 from ...views.figures import new_figure
 from ...views.triads import draw_triad, free_direction, letter_points
 from ...views.viewbase import checked_robot, one_pose

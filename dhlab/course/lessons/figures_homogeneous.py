@@ -106,9 +106,9 @@ def frame_panel(theta_deg=30.0, a=1.0, alpha_deg=45.0):
     Rx(α)·Tr(a,0,0)·Rz(θ)), both matrices live. Returns the panel (``.sliders``: θ, a, α)."""
     import ipywidgets as widgets  # lazy: the notebook's own libraries, on first display
 
-    from ...views.livefigure import LiveFigure  # lazy: the live views load ipywidgets and mplot3d
-    from ...views.panel import Panel  # lazy: the live views load ipywidgets and mplot3d
-    from ...views.teach import matrix_html  # lazy: the live views load ipywidgets and mplot3d
+    from ...views.live.livefigure import LiveFigure  # lazy: the live views load ipywidgets and mplot3d
+    from ...views.panels.panel import Panel  # lazy: the live views load ipywidgets and mplot3d
+    from ...views.panels.teach import matrix_html  # lazy: the live views load ipywidgets and mplot3d
 
     live = LiveFigure(figsize=(6.0, 6.4))
     ax = live.figure.add_subplot(projection="3d")

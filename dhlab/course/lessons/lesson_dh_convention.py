@@ -19,10 +19,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...dh import DHRobot
+from ...errors import DHLabError
 from ...i18n import N_, _
 from ...lines import Line, closest_points, relation
 from ...transforms import check_rigid, dh_matrix
-from ...validation import DHLabError, as_float_array
+from ...validation import as_float_array
+from .printing import fmt as vector_text
 
 __all__ = ["fmt", "three_cases", "XPlacement", "place_x", "measured_row", "measured_rows_agree",
            "prismatic_a_lines"]
@@ -31,9 +33,9 @@ CASES = {"intersect": 1, "parallel": 2, "skew": 3}       # rule 7's three cases,
 
 
 def fmt(v, digits: int = 6) -> str:
-    """A vector as ``(x, y, z)``, rounded to ``digits`` decimals, without ``-0``."""
-    rounded = np.round(np.asarray(v, dtype=float), digits) + 0.0      # + 0.0 turns -0.0 into 0.0
-    return "(" + ", ".join(f"{c:.{digits}f}".rstrip("0").rstrip(".") for c in rounded) + ")"
+    """A vector as ``(x, y, z)``, rounded to ``digits`` decimals, trailing zeros and ``-0`` dropped
+    (notebooks 5 and 6; see :mod:`~dhlab.course.lessons.vector_text`)."""
+    return vector_text(v, digits, trim=True)
 
 
 def three_cases():

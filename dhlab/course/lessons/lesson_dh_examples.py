@@ -17,20 +17,16 @@ import numpy as np
 import sympy as sp
 
 from ...data import load as load_data
+from ...errors import DHLabError
 from ...i18n import _
 from ...units import deg2rad
-from ...validation import DHLabError, describe
+from ...validation import describe
+from .lesson_dh_convention import fmt  # notebook 5's: (0.5, 0, 1), trailing zeros dropped
 
 __all__ = ["fmt", "from_slide", "compare_with_slide", "check_cases", "signed_angle", "read_rows_at_zero",
            "hand_derived_003", "wrist_centre", "wrist_centre_check", "elbow_flipped", "wrist_centre_panel"]
 
 WRIST = 4          # the wrist centre is the origin of frame 4 (= frame 5) on both 6-DOF arms
-
-
-def fmt(v, digits: int = 6) -> str:
-    """A vector as (x, y, z), rounded, without trailing zeros and without -0."""
-    values = np.round(np.asarray(v, dtype=float).ravel(), digits) + 0.0
-    return "(" + ", ".join(f"{c:.{digits}f}".rstrip("0").rstrip(".") for c in values) + ")"
 
 
 # --- the slides' matrices ---------------------------------------------------------------------------
@@ -136,8 +132,8 @@ def hand_derived_003(robot) -> dict[int, sp.Matrix]:
     if len(q) != 6:
         raise DHLabError(f"hand_derived_003 is for seed 003's 6-DOF arm, got a robot with {len(q)} joints.")
     l1, l2, l3, l4 = sp.symbols("l1:5")
-    C = lambda k: sp.cos(q[k - 1])                    # noqa: E731 - the slides' C_k and S_k
-    S = lambda k: sp.sin(q[k - 1])                    # noqa: E731
+    C = lambda k: sp.cos(q[k - 1])
+    S = lambda k: sp.sin(q[k - 1])
     rows = {
         1: [[C(1), 0, S(1), 0], [S(1), 0, -C(1), 0], [0, 1, 0, l1]],
         2: [[-S(2), -C(2), 0, -l2 * S(2)], [C(2), -S(2), 0, l2 * C(2)], [0, 0, 1, 0]],
@@ -198,7 +194,7 @@ def wrist_centre_panel(robot, q=None):
     giving the centre's coordinates; returns (panel, line). Display both: ``display(panel, line)``."""
     import ipywidgets as widgets  # lazy: the notebook's own libraries, on first display
 
-    from ...views.teach import teach  # lazy: the live views load ipywidgets and mplot3d
+    from ...views.panels.teach import teach  # lazy: the live views load ipywidgets and mplot3d
 
     line, dot = widgets.HTML(), []
 

@@ -16,15 +16,9 @@ import numpy as np
 import sympy as sp
 
 from ...validation import as_float_array
+from .printing import fmt, show  # fmt: fixed decimals: (0.500000, 0.000000, 1.000000)
 
 __all__ = ["fmt", "matrix_text", "show", "seed004_eq1", "seed002_A", "seed001_rotation_block"]
-
-
-def fmt(v, digits: int = 6) -> str:
-    """A vector as ``(x, y, …)`` with ``digits`` decimals and no ``-0.000000``."""
-    values = as_float_array(v, "v", finite=True).ravel()
-    # round first, then add 0.0: that turns a rounded -0.0 into +0.0
-    return "(" + ", ".join(f"{round(float(x), digits) + 0.0:.{digits}f}" for x in values) + ")"
 
 
 def matrix_text(T, digits: int = 6) -> str:
@@ -32,11 +26,6 @@ def matrix_text(T, digits: int = 6) -> str:
     return str(np.round(as_float_array(T, "T", finite=True), digits) + 0.0)
 
 
-def show(label: str, M) -> None:
-    """Display ``label = M`` in LaTeX (``label`` is LaTeX, ``M`` a sympy matrix or expression)."""
-    from IPython.display import Math, display  # only when a notebook shows something
-
-    display(Math(f"{label} = {sp.latex(M)}"))
 
 
 def seed004_eq1(theta, px, py, pz) -> sp.Matrix:

@@ -17,29 +17,21 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from ...errors import DHLabError
 from ...i18n import _
 from ...ik import pr_mechanism_ik
 from ...units import rad2deg
-from ...validation import DHLabError, describe
+from ...validation import describe
 from ...views.figures import new_figure
 from ...views.view import robot_view
 from ...views.viewbase import one_pose
 from .figures_common import label, triad
+from .printing import fmt, show  # fmt: fixed decimals: (0.500000, 0.000000, 1.000000)
 
 __all__ = ["fmt", "show", "branch_residuals", "ik_report", "branches_within_limits", "workspace_report",
            "compare_methods", "pr_mechanism_figure", "geometric_examples_figure"]
 
 
-def fmt(v, digits: int = 6) -> str:
-    """A vector as (x, y, …) with a fixed number of decimals (and no -0.000000)."""
-    values = np.ravel(np.asarray(v, dtype=float))
-    return "(" + ", ".join(f"{round(float(x), digits) + 0.0:.{digits}f}" for x in values) + ")"
-
-
-def show(label: str, M) -> None:
-    """Display 'label = M' in LaTeX."""
-    from IPython.display import Math, display  # lazy: the notebook's own libraries, on first display
-    display(Math(f"{label} = {sp.latex(M)}"))
 
 
 def branch_residuals() -> dict:

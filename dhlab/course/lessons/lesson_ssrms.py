@@ -20,17 +20,18 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from ...errors import DHLabError
 from ...i18n import _
 from ...lines import relation
-from ...validation import DHLabError
+from .printing import fmt as vector_text
 
 __all__ = ["fmt", "factors_latex", "frames_table", "same_axes", "seed_words", "axis_relations"]
 
 
 def fmt(v, digits: int = 3) -> str:
-    """The vector ``v`` as ``(x, y, z)``, rounded to ``digits`` decimals, trailing zeros and -0 dropped."""
-    values = np.round(np.asarray(v, dtype=float).ravel(), digits) + 0.0      # + 0.0 turns -0.0 into 0.0
-    return "(" + ", ".join(f"{c:.{digits}f}".rstrip("0").rstrip(".") for c in values) + ")"
+    """The vector ``v`` as ``(x, y, z)``, rounded to ``digits`` decimals, trailing zeros and -0 dropped
+    (see :mod:`~dhlab.course.lessons.vector_text`)."""
+    return vector_text(v, digits, trim=True)
 
 
 def factors_latex(config, per_line: int = 4) -> str:

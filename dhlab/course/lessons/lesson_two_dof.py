@@ -17,9 +17,9 @@ import math
 import numpy as np
 import sympy as sp
 
+from ...errors import DHLabError
 from ...i18n import _
 from ...units import deg2rad
-from ...validation import DHLabError
 from ...views.camera import set_camera
 from ...views.figures import new_figure
 from ...views.view import robot_view

@@ -17,9 +17,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...errors import DHLabError
 from ...i18n import _
 from ...transforms import Rx, Rz, trans
-from ...validation import DHLabError, as_number
+from ...validation import as_number
 from ..exercises.homogeneous import seed001_DefinirTHz  # seed 001's listing, transcribed in notebook 2
 
 __all__ = ["CONFIGURAR_TH", "KEYS", "OFFSETS", "SeedProgram", "seed001_frames"]

@@ -33,15 +33,14 @@ release's manifest) and ``signed_for`` (whose signature the notebook carries).
 """
 from __future__ import annotations
 
-import json
 import unicodedata
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
 from ...assignment import variants as V
 from ...assignment.notebook_cells import prepare_submission
+from ...errors import DHLabError
 from ...i18n import N_, _
-from ...validation import DHLabError
 from ..release.folder import load_teacher_records, manifest_file, manifest_rows, records_file
 from ..release.roster import safe_filename
 
@@ -89,37 +88,41 @@ def setup(secret_file, release=None, fallback=None) -> VariantSetup:
     secret = V.load_secret(secret_file)
     fallback = fallback or ("roster" if release is not None else "none")
     if fallback not in FALLBACKS:
-        raise DHLabError(f"--fallback {fallback!r}: choose one of {', '.join(FALLBACKS)}.")
+        raise DHLabError(_("--fallback {value!r}: choose one of {choices}.").format(
+            value=fallback, choices=", ".join(FALLBACKS)))
     if release is None:
         if fallback == "roster":
-            raise DHLabError("--fallback roster needs --release: the folder dhlab-assign release wrote "
-                             "(its _teacher/variants.json holds every student's variant).")
+            raise DHLabError(_("--fallback roster needs --release: the folder dhlab-assign release wrote "
+                               "(its _teacher/variants.json holds every student's variant)."))
         return VariantSetup(secret, fallback=fallback)
     release = Path(release)
     teacher_file = records_file(release)
     if not release.is_dir():
-        raise DHLabError(f"--release {str(release)!r} is not a folder: pass the folder that "
-                         "'dhlab-assign release ROSTER.csv -o FOLDER' wrote.")
+        raise DHLabError(_("--release {folder!r} is not a folder: pass the folder that "
+                           "'dhlab-assign release ROSTER.csv -o FOLDER' wrote.").format(folder=str(release)))
     if not teacher_file.is_file():
-        raise DHLabError(f"--release {str(release)!r} has no _teacher/variants.json: pass the folder that "
-                         "'dhlab-assign release ROSTER.csv -o FOLDER' wrote (not the students' copies).")
+        raise DHLabError(_("--release {folder!r} has no _teacher/variants.json: pass the folder that "
+                           "'dhlab-assign release ROSTER.csv -o FOLDER' wrote (not the students' copies).").format(
+            folder=str(release)))
     records = load_teacher_records(teacher_file)
     bad = [sid for sid, record in records.items() if not V.verify(record, sid, secret).ok]
     if records and len(bad) == len(records):
-        raise DHLabError(f"none of the {len(records)} variants in {teacher_file} verifies with the secret in "
-                         f"{str(secret_file)!r}: is it the secret the notebooks were released with?")
+        raise DHLabError(_("none of the {count} variants in {file} verifies with the secret in {secret!r}: is "
+                           "it the secret the notebooks were released with?").format(
+            count=len(records), file=teacher_file, secret=str(secret_file)))
     if bad:
-        raise DHLabError(f"{len(bad)} of the {len(records)} variants in {teacher_file} do not verify with the "
-                         f"secret (first: {', '.join(map(repr, bad[:5]))}): the teacher's file was changed; "
-                         "release the class again, or restore the file from a backup.")
+        raise DHLabError(_("{bad} of the {count} variants in {file} do not verify with the secret (first: "
+                           "{first}): the teacher's file was changed; release the class again, or restore the "
+                           "file from a backup.").format(bad=len(bad), count=len(records), file=teacher_file,
+                                                         first=", ".join(map(repr, bad[:5]))))
     if not records:
-        raise DHLabError(f"{teacher_file} lists no students: release the roster again.")
+        raise DHLabError(_("{file} lists no students: release the roster again.").format(file=teacher_file))
     return VariantSetup(secret, records, release_files(release, records), fallback, release)
 
 
 def release_files(release: Path, records: dict) -> dict:
     """Release file stem -> student id, from the manifest (ids with unusual characters get
-    another file name, see :func:`dhlab.grading.release.notebooks.safe_filename`)."""
+    another file name, see :func:`dhlab.grading.release.roster.safe_filename`)."""
     files = {safe_filename(sid): sid for sid in records}
     for row in manifest_rows(manifest_file(release)):     # none: the names derived from the ids are enough
         sid, file = row.get("student_id"), row.get("file")
@@ -240,11 +243,3 @@ def feedback_lines(info: VariantInfo | None) -> list:
     if info.status != "ok":
         lines.append(_("Variant check: {status} — {message}.").format(status=info.status, message=info.message))
     return lines + [""]
-
-
-def read_notebook(raw: bytes):
-    """The notebook's JSON (any value), or None when the file is not JSON (the runner says why)."""
-    try:
-        return json.loads(raw.decode("utf-8"))
-    except (UnicodeDecodeError, ValueError, RecursionError):
-        return None

@@ -22,20 +22,20 @@ import csv
 import functools
 import hashlib
 import json
-import os
 import re
-import tempfile
 import unicodedata
-from pathlib import Path
 
 from ...assignment import variants
 from ...assignment.family import shown_name
 from ...assignment.notebook_cells import SEAM_CELL_ID, release_notebook
-from ...i18n import N_, _
+from ...i18n import N_, _, speaking
+from ..atomic_file import write_atomic
+from ..csvsafe import GRADEBOOK_BOM, csv_text, restored
+from ..release.comments import with_comments
 from ..release.generate import TEMPLATE
-from .csvsafe import GRADEBOOK_BOM, csv_text, restored
+from ..release.language import in_spanish, spanish_comments
 
-__all__ = ["COLUMNS", "VARIANT_COLUMNS", "PART_COLUMNS", "GRADE_AGAIN", "REMOVED", "write_atomic", "write_csv",
+__all__ = ["COLUMNS", "VARIANT_COLUMNS", "PART_COLUMNS", "GRADE_AGAIN", "REMOVED", "write_csv",
            "read_csv", "feedback_filename", "Cells", "error_text", "cell_error", "status_text", "feedback_text",
            "not_graded_feedback", "grade_again", "assignment_cells"]
 
@@ -52,29 +52,15 @@ NOT_THE_STUDENTS = N_("not the student's fault: {again}")
 REMOVED = "removed since the last run"          # (a key --resume finds: never translated)
 
 
-def write_atomic(path, text: str) -> None:
-    """Write ``text`` to ``path`` so that the file is either the old one or the new one."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
-            f.write(text)
-            f.flush()
-            os.fsync(f.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 def write_csv(path, rows, columns=COLUMNS) -> None:
     """The gradebook: one row per submission (dicts with the keys of ``columns``:
     :data:`COLUMNS`, or :data:`VARIANT_COLUMNS` when grading variants). A teacher opens it in
-    a spreadsheet, so no cell runs as a formula (:mod:`dhlab.grading.book.csvsafe`): the numeric
+    a spreadsheet, so no cell runs as a formula (:mod:`dhlab.grading.csvsafe`): the numeric
     columns — ``score``, ``max_score``, the three parts and ``seconds`` — keep their numbers;
     every other cell is text, escaped when it starts like a formula (a file named
-    ``=1+2.ipynb`` is the row ``'=1+2``). UTF-8, with a BOM if :data:`~dhlab.grading.book.csvsafe.GRADEBOOK_BOM`."""
+    ``=1+2.ipynb`` is the row ``'=1+2``). UTF-8, with a BOM if :data:`~dhlab.grading.csvsafe.GRADEBOOK_BOM`."""
     numeric = {"score", "max_score", *PART_COLUMNS.values(), "seconds"}
     table = [list(columns)] + [[row.get(c, "") for c in columns]
                                for row in sorted(rows, key=lambda r: r["submission"])]
@@ -153,9 +139,9 @@ class Cells:
 
     def of_assignment(self, cell: int) -> bool:
         """Whether the cell is one of the assignment's locked cells (the student cannot edit them)."""
-        code, seam_line, _stubs = assignment_cells()
+        code, seam_lines, _stubs = assignment_cells()
         source = self.source.get(cell)
-        return source is not None and (source.strip() in code or source.lstrip().startswith(seam_line))
+        return source is not None and (source.strip() in code or source.lstrip().startswith(seam_lines))
 
     def answer_parts(self, cell: int) -> list:
         """The parts whose answer cell this is (it opens with that cell's comment) or whose answers
@@ -172,14 +158,21 @@ class Cells:
 @functools.cache
 def assignment_cells() -> tuple:
     """(the code of every locked cell of the assignment, as handed out or released with a personal
-    robot; the first line of the released "Your robot" cell, which the grader rewrites; the part
-    of each answer cell's first line, e.g. '# Part 2: write link_points below: …')."""
+    robot, in English or in Spanish (whose comments are translated); the first line of the released
+    "Your robot" cell in either language, which the grader rewrites; the part of each answer cell's first
+    line, e.g. '# Part 2: write link_points below: …' or '# Parte 2: escriba link_points debajo: …')."""
     handed_out = json.loads(TEMPLATE.read_text(encoding="utf-8"))     # the student notebook, package data
     cells = list(handed_out["cells"])
+    comments = spanish_comments(handed_out)       # the Spanish edition's notebook 8: its comments in Spanish
+    cells += [{**cell, "source": with_comments("".join(cell["source"]), comments[cell["id"]])}
+              for cell in handed_out["cells"] if cell.get("id") in comments]
     for family in variants.family_names():        # each robot's release says its own joints (setup cell)
         record = {"variant": variants.variant(family, "any").to_dict(), "student_id": "any"}
         cells += release_notebook(handed_out, record, figures=False)[0]["cells"]
-    code, seam_line, stubs = set(), None, {}
+        with speaking("es"):                      # this thread only: the grader's workers may be running
+            released = release_notebook(handed_out, record, figures=False)[0]
+            cells += in_spanish(released, handed_out, record, set())["cells"]
+    code, seam_lines, stubs = set(), set(), {}
     for cell in cells:
         meta = cell.get("metadata", {}).get("nbgrader", {})
         source = "".join(cell["source"]) if isinstance(cell["source"], list) else cell["source"]
@@ -189,8 +182,8 @@ def assignment_cells() -> tuple:
         elif cell["cell_type"] == "code" and meta.get("locked") and not meta.get("solution"):
             code.add(source.strip())
             if cell.get("id") == SEAM_CELL_ID:
-                seam_line = source.splitlines()[0]
-    return frozenset(code), seam_line or "\0", stubs
+                seam_lines.add(source.splitlines()[0])
+    return frozenset(code), tuple(sorted(seam_lines)) or ("\0",), stubs
 
 
 def error_text(ename: str, evalue: str) -> str:

@@ -17,11 +17,11 @@ import sys
 import tempfile
 from pathlib import Path
 
-from ...i18n import _, as_teacher
-from ...validation import DHLabError
-from ..book.csvsafe import neutralised
+from ...errors import DHLabError
+from ...i18n import N_, _, as_teacher, error_line
 from ..book.grade_variants import release_files
 from ..book.gradebook import read_csv
+from ..csvsafe import neutralised
 from ..options import shared
 from . import lms
 from .gradescope import export
@@ -29,9 +29,12 @@ from .gradescope_local import Harness, metadata, problems
 
 __all__ = ["main"]
 
+# the docstring's first line, in the teacher's language in --help
+DESCRIPTION = N_("``dhlab-grade export …``: the grading where the teacher's university already grades.")
+
 
 def _parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="dhlab-grade export", description=__doc__.splitlines()[0],
+    parser = argparse.ArgumentParser(prog="dhlab-grade export", description=_(DESCRIPTION),
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="target", required=True)
     gs = sub.add_parser("gradescope", help=_("Gradescope's autograder.zip (otter-grader runs it too)"),
@@ -83,7 +86,7 @@ def _lms(args) -> int:
                            "Check --id-column, or pass --release when the files have the release's names.").format(
             gradebook=args.gradebook, roster=args.roster, column=id_column, count=len(rows), skipped=len(skipped)))
     if args.target == "canvas":
-        table = lms.canvas_rows(by_id, roster, id_column, args.assignment, rows[0]["max_score"])
+        table = lms.canvas_rows(by_id, roster, args.assignment, rows[0]["max_score"])
     else:
         feedback = args.feedback_dir or args.gradebook.with_name(args.gradebook.stem + "_feedback")
         table = lms.moodle_rows(by_id, id_column, feedback)
@@ -162,5 +165,5 @@ def _main(argv) -> int:
             return _try(args)
         return _lms(args)
     except DHLabError as exc:
-        print(f"dhlab-grade export: error: {exc}", file=sys.stderr)
+        print(error_line("dhlab-grade export", exc), file=sys.stderr, end="")
         return 2

@@ -57,8 +57,8 @@ from types import SimpleNamespace
 
 from ...assignment import checks
 from ...assignment.checks import POINTS, TITLES
+from ...errors import DHLabError
 from ...i18n import _, current_language, speaking
-from ...validation import DHLabError
 from ..book import grade_variants as GV
 from ..book.gradebook import PART_COLUMNS
 from ..book.submission_row import grade_submission
@@ -215,7 +215,7 @@ def _grade(root: Path, config: dict) -> dict:
             raise AutograderError(f"cannot read submission_metadata.json ({e})") from None
         student = _student(metadata, vs)
         names |= {f"{stem}.ipynb" for stem, sid in vs.files.items() if sid == student}
-        resolve = lambda nb, file: GV.resolve(vs, nb, f"{student}.ipynb")     # noqa: E731
+        resolve = lambda nb, file: GV.resolve(vs, nb, f"{student}.ipynb")
     notebook = _notebook(submission, names)
     if isinstance(notebook, str):
         return {"score": 0.0, "output": notebook, "tests": []}

@@ -15,10 +15,10 @@ failed on it (no score), or it had no variant to grade against ("student not ide
 ``variant_source`` none) — is never exported as a grade: it is listed instead (:func:`not_graded`).
 
 The roster may be in Spanish: ``identificador``, ``usuario``… as ids (see
-:data:`dhlab.grading.release.notebooks.ID_COLUMNS`; any other column, e.g. ``correo`` or ``email``, with
+:data:`dhlab.grading.release.roster.ID_COLUMNS`; any other column, e.g. ``correo`` or ``email``, with
 ``--id-column``), ``nombre`` and ``apellidos`` (or ``nombre completo``) as the name. The files
 written are UTF-8 with a BOM, so that Excel shows ``José``, and no cell runs as a formula
-(:mod:`dhlab.grading.book.csvsafe`: the grade column keeps its numbers, the rest is text).
+(:mod:`dhlab.grading.csvsafe`: the grade column keeps its numbers, the rest is text).
 
 * **Canvas** (Grades → Import): ``Student, ID, SIS User ID, SIS Login ID, Section, <assignment>``,
   then a ``Points Possible`` row. Canvas matches a student by ``ID``, then ``SIS User ID`` or
@@ -34,9 +34,9 @@ from __future__ import annotations
 
 from pathlib import Path, PurePosixPath
 
-from ...validation import DHLabError
-from ..book.csvsafe import csv_text
-from ..book.gradebook import write_atomic
+from ...errors import DHLabError
+from ..atomic_file import write_atomic
+from ..csvsafe import csv_text
 from ..release.roster import checked_id, csv_rows, id_column_index, look_alikes
 
 __all__ = ["read_roster_rows", "match", "not_graded", "canvas_rows", "moodle_rows", "write", "CANVAS_COLUMNS"]
@@ -130,7 +130,7 @@ def _name(record: dict) -> str:
     return f"{last}, {first}" if first and last else first or last
 
 
-def canvas_rows(by_id: dict, roster: dict, id_column: str, assignment: str, max_score) -> list:
+def canvas_rows(by_id: dict, roster: dict, assignment: str, max_score) -> list:
     """The Canvas import: header, the Points Possible row, one row per graded student."""
     rows = [CANVAS_COLUMNS + [assignment], [POINTS_POSSIBLE, "", "", "", "", f"{float(max_score):g}"]]
     for sid, grade in by_id.items():
@@ -160,5 +160,5 @@ def moodle_rows(by_id: dict, id_column: str, feedback_dir=None) -> list:
 def write(path, rows, numeric_columns=()) -> None:
     """A CSV file for Excel and the LMS: UTF-8 with a BOM, comma-separated, every field quoted
     only when it must be, no cell a formula (``numeric_columns``: the indexes of the grade
-    columns, whose numbers are kept; see :mod:`dhlab.grading.book.csvsafe`)."""
+    columns, whose numbers are kept; see :mod:`dhlab.grading.csvsafe`)."""
     write_atomic(path, csv_text(rows, numeric_columns))

@@ -5,6 +5,7 @@
 * :mod:`~dhlab.grading.release.roster` — the roster's student ids, and a safe file name for each;
 * :mod:`~dhlab.grading.release.folder` — a release folder's signed records and manifest, read back;
 * :mod:`~dhlab.grading.release.language` — each released notebook in its student's language;
+* :mod:`~dhlab.grading.release.comments` — a code cell's comments, found and translated (the code stays);
 * :mod:`~dhlab.grading.release.generate` — the student notebook (package data, ``dhlab/grading/template/``)
   kept the course's, and made again from a solved notebook (``python -m dhlab.grading.release.generate``);
 * :mod:`~dhlab.grading.release.solutions` — ``dhlab-assign solutions``: the teacher's solved notebook,

@@ -9,8 +9,8 @@ import csv
 import json
 from pathlib import Path
 
-from ...validation import DHLabError
-from ..book.csvsafe import restored
+from ...errors import DHLabError
+from ..csvsafe import restored
 
 __all__ = ["records_file", "manifest_file", "load_teacher_records", "manifest_rows"]
 
@@ -36,7 +36,7 @@ def load_teacher_records(path) -> dict:
 
 def manifest_rows(path) -> list:
     """The rows of a manifest ``dhlab-assign release`` wrote (dicts; [] when there is none, with or
-    without a BOM), its cells unescaped (:mod:`dhlab.grading.book.csvsafe`)."""
+    without a BOM), its cells unescaped (:mod:`dhlab.grading.csvsafe`)."""
     try:
         with open(path, newline="", encoding="utf-8-sig") as f:
             return [{k: restored(v) for k, v in row.items() if k is not None} for row in csv.DictReader(f)]

@@ -46,6 +46,10 @@ For the same result with nbgrader, set in ``nbgrader_config.py``::
 
     c.ClearSolutions.code_stub = {"python": "# YOUR CODE HERE"}
 
+A Spanish source notebook (its set-up cell says ``dhlab.set_language("es")``) gets the Spanish stub,
+``# ESCRIBA SU CÓDIGO AQUÍ`` (:data:`dhlab.assignment.solution.ANSWER_MARKERS`; for nbgrader, the same
+``code_stub`` setting with that line); the grader reads a blank answer in either language the same way.
+
 >>> cell = {"cell_type": "code", "source": "x = ...\\n### BEGIN SOLUTION\\nx = 7\\n### END SOLUTION",
 ...         "metadata": {"nbgrader": {"grade": False, "solution": True, "locked": False,
 ...                                   "grade_id": "a", "schema_version": 3}}, "outputs": []}
@@ -66,9 +70,10 @@ from pathlib import Path
 
 import nbformat
 
-from ...assignment.solution import ANSWER_MARKER, solved_notebook
+from ...assignment.solution import ANSWER_MARKER, ANSWER_MARKERS, solved_notebook
 from ...errors import DHLabError
 from ...i18n import N_, _
+from .language import notebook_language
 
 __all__ = ["CODE_STUB", "TEXT_STUB", "GenerateError", "SourceMissing", "clear_solutions", "remove_hidden_tests",
            "check_metadata", "student_cell", "student_notebook", "generate", "main", "solution_notebook",
@@ -210,13 +215,13 @@ def check_metadata(cells) -> None:
             raise GenerateError(f"{where}: a markdown grade cell must also be a solution cell")
 
 
-def student_cell(cell: dict) -> dict:
-    """The student's version of one cell (a new dict)."""
+def student_cell(cell: dict, code_stub: str = CODE_STUB) -> dict:
+    """The student's version of one cell (a new dict); ``code_stub`` replaces a code solution."""
     cell = copy.deepcopy(cell)
     meta = cell.get("metadata", {}).get("nbgrader", {})
     is_solution, is_grade = bool(meta.get("solution")), bool(meta.get("grade"))
     is_locked = bool(meta.get("locked")) and not is_solution
-    stub = CODE_STUB if cell["cell_type"] == "code" else TEXT_STUB
+    stub = code_stub if cell["cell_type"] == "code" else TEXT_STUB
     source, replaced = clear_solutions(_source(cell), stub)
     if replaced and not is_solution:
         raise GenerateError("a solution region in a cell that is not a solution cell:\n" + _source(cell)[:200])
@@ -239,10 +244,11 @@ def student_cell(cell: dict) -> dict:
 
 
 def student_notebook(nb: dict) -> dict:
-    """The student's version of a whole notebook (a new dict)."""
+    """The student's version of a whole notebook (a new dict), its code stub in the notebook's language."""
     check_metadata(nb["cells"])
     out = copy.deepcopy(nb)
-    out["cells"] = [student_cell(c) for c in nb["cells"]]
+    stub = ANSWER_MARKERS.get(notebook_language(nb) or "en", CODE_STUB)
+    out["cells"] = [student_cell(c, stub) for c in nb["cells"]]
     code = [c for c in out["cells"] if c["cell_type"] == "code"]
     for k, cell in enumerate(code, start=1):      # a shown output carries the count Run All gives it
         if cell.get("outputs"):

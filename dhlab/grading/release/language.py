@@ -13,7 +13,9 @@ variant changes in the English text (the robot's name, its number of joints, T1�
 robot") is changed the same way in the Spanish text (:func:`own_robot_text_es`); the "Your
 robot" section itself is written by :func:`~dhlab.assignment.notebook_cells.release_notebook`, run
 in the student's language (its sentences are in the course's catalog). The code cells stay the
-English ones but for the set-up cell's ``dhlab.set_language("es")``; the language is also
+English ones but for their comments — the template's translated like the markdown
+(:func:`spanish_comments`), the answer cells' instructions written by ``release_notebook`` in the
+student's language — and the set-up cell's ``dhlab.set_language("es")``; the language is also
 recorded in ``metadata["dhlab"]["language"]``, where the grader reads it (:func:`notebook_language`).
 """
 from __future__ import annotations
@@ -26,10 +28,11 @@ from pathlib import Path
 from ...assignment import variants as V
 from ...assignment.family import spec
 from ...assignment.notebook_cells import apply_rules, formula_rules
-from ...i18n import LANGUAGES, _, checked_language, default_language, set_language, speaking  # noqa: F401  (part of this module's API)
+from ...i18n import LANGUAGES, _, checked_language, set_language, speaking
+from .comments import with_comments
 
-__all__ = ["LANGUAGE_COLUMNS", "checked_language", "roster_languages", "in_language", "spanish_texts",
-           "in_spanish", "mark_language", "notebook_language", "raw_notebook_language", "default_language",
+__all__ = ["LANGUAGE_COLUMNS", "roster_languages", "in_language", "spanish_texts",
+           "spanish_comments", "in_spanish", "mark_language", "notebook_language", "raw_notebook_language",
            "own_robot_text_es", "SPANISH_TEXTS"]
 
 LANGUAGE_COLUMNS = ("language", "idioma", "lang")
@@ -67,14 +70,29 @@ def in_language(language: str):
 
 # --- the Spanish text -------------------------------------------------------------------------------
 
+def _shipped(part: str) -> dict:
+    """One part (``cells`` or ``comments``) of the Spanish edition's texts, {} when unreadable."""
+    try:
+        found = json.loads(SPANISH_TEXTS.read_text(encoding="utf-8")).get(part, {})
+    except (OSError, ValueError, AttributeError):
+        return {}
+    return found if isinstance(found, dict) else {}
+
+
+def spanish_comments(template: dict) -> dict:
+    """code cell id -> {English comment: its Spanish} for each code cell of ``template`` the
+    catalog knows (by id: a teacher's own cell keeps its comments, unless one is word for word
+    the course's)."""
+    known = _shipped("comments")
+    return {cell["id"]: known[cell["id"]] for cell in template.get("cells", [])
+            if cell.get("cell_type") == "code" and cell.get("id") in known}
+
+
 def spanish_texts(template: dict) -> dict:
     """cell id -> the Spanish text of each markdown cell of the English ``template`` that the
     catalog translates (a cell it does not know, or whose English differs, e.g. of a teacher's own
     template, is left out)."""
-    try:
-        known = json.loads(SPANISH_TEXTS.read_text(encoding="utf-8"))["cells"]
-    except (OSError, ValueError, KeyError):
-        return {}
+    known = _shipped("cells")
     found = {}
     for cell in template.get("cells", []):
         entry = known.get(cell.get("id")) if cell.get("cell_type") == "markdown" else None
@@ -123,7 +141,10 @@ def in_spanish(released: dict, template: dict, record: dict, notes: set) -> dict
         notes.add(_("the Spanish catalog of the assignment has no entry for this template: "
                     "the notebooks' text stays in English"))
     english_cells = {c.get("id"): _source(c) for c in template.get("cells", [])}
+    comments = spanish_comments(template)
     for k, cell in enumerate(released["cells"]):
+        if cell.get("cell_type") == "code" and cell.get("id") in comments:
+            cell["source"] = _lines(with_comments(_source(cell), comments[cell["id"]]))
         if cell.get("cell_type") != "markdown":
             continue
         text = english = _source(cell)

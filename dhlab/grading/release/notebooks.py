@@ -20,7 +20,7 @@ robot's figure (drawn when the student runs the cell; stored in the notebook wit
 notebook's metadata (``metadata["dhlab"]``). The same roster and secret always give
 byte-identical notebooks. ``release/_teacher/`` keeps the teacher's copy of every
 variant (``variants.json``) and which file is whose (``manifest.csv``, UTF-8 with a BOM for
-Excel, no cell a formula: :mod:`dhlab.grading.book.csvsafe`): hand out only the ``.ipynb`` files.
+Excel, no cell a formula: :mod:`dhlab.grading.csvsafe`): hand out only the ``.ipynb`` files.
 
 **Releasing again into the same folder adds, never replaces.** The teacher's records there are
 kept: a student already released keeps the variant recorded (their notebook is written again
@@ -52,20 +52,19 @@ import sys
 from pathlib import Path, PurePosixPath
 
 from ...assignment import variants as V
-from ...assignment.notebook_cells import SEAM_CELL_ID, prepare_submission, release_notebook, seam_source
-from ...i18n import _, language_option, set_language
-from ...validation import DHLabError
-from ..book.csvsafe import csv_text
-from ..book.gradebook import write_atomic
+from ...assignment.notebook_cells import release_notebook
+from ...errors import DHLabError
+from ...i18n import _, argparse_speaking, default_language, error_line, language_option, set_language
+from ..atomic_file import write_atomic
+from ..csvsafe import csv_text
 from ..options import DEFAULT_SECRET_FILE, shared
 from . import folder, generate, solutions
-from .folder import load_teacher_records, manifest_rows  # noqa: F401  (load_teacher_records: API)
-from .language import default_language, in_language, in_spanish, mark_language, roster_languages
-from .roster import ID_COLUMNS, checked_id, csv_rows, look_alikes, read_roster, safe_filename  # noqa: F401  (API)
+from .folder import load_teacher_records, manifest_rows
+from .language import in_language, in_spanish, mark_language, roster_languages
+from .roster import ID_COLUMNS, csv_rows, read_roster, safe_filename
 
-__all__ = ["read_roster", "checked_id", "look_alikes", "previous_release", "safe_filename", "release_notebook",
-           "release", "main", "TEMPLATE", "ID_COLUMNS", "SEAM_CELL_ID", "DEFAULT_SECRET_FILE", "seam_source",
-           "load_teacher_records", "submission_variant", "prepare_submission"]
+# (the roster's, the notebook's and the folder's own names live in roster.py, notebook_cells.py, folder.py)
+__all__ = ["previous_release", "release", "main", "TEMPLATE", "submission_variant"]
 
 TEMPLATE = generate.TEMPLATE          # the student notebook, package data (no solutions in it)
 
@@ -108,7 +107,7 @@ def release(roster, out, secret: bytes, families=None, id_column=None, template=
     (out / "_teacher").mkdir(parents=True, exist_ok=True)
     manifest, teacher, notes = [], dict(earlier), set()
     for sid in ids:
-        record = earlier.get(sid) or V.sign(chosen[sid], sid, secret)
+        record = earlier.get(sid) or V.sign_record(chosen[sid], sid, secret)
         with in_language(languages[sid]):               # the figure's and tables' words too
             nb, cell_notes = release_notebook(tpl, record, figures)
             if languages[sid] == "es":
@@ -236,8 +235,8 @@ def _secret(path) -> bytes:
     secret = V.new_secret()
     DEFAULT_SECRET_FILE.touch(mode=0o600)
     DEFAULT_SECRET_FILE.write_bytes(secret + b"\n")
-    print(f"dhlab-assign: made a new secret in {DEFAULT_SECRET_FILE.resolve()}: keep it (grading needs it) "
-          "and never hand it out.", file=sys.stderr)
+    print(_("dhlab-assign: made a new secret in {file}: keep it (grading needs it) and never hand it "
+            "out.").format(file=DEFAULT_SECRET_FILE.resolve()), file=sys.stderr)
     return secret
 
 
@@ -249,10 +248,11 @@ def main(argv=None) -> int:
     try:
         previous = set_language(language_option(argv))
     except DHLabError as exc:
-        print(f"dhlab-assign: error: {exc}", file=sys.stderr)
+        print(error_line("dhlab-assign", exc), file=sys.stderr, end="")
         return 2
     try:
-        return _main(argv)
+        with argparse_speaking():              # argparse's own words too ("usage:", "error:")
+            return _main(argv)
     finally:
         set_language(previous)
 
@@ -285,7 +285,7 @@ def _main(argv) -> int:
         rows = release(args.roster, args.output, secret, args.family, args.id_column, args.template,
                        figures=args.figures, language=args.language)
     except DHLabError as exc:
-        print(f"dhlab-assign: error: {exc}", file=sys.stderr)
+        print(error_line("dhlab-assign", exc), file=sys.stderr, end="")
         return 2
     families = sorted({r["family"] for r in rows})
     counts = ", ".join(f"{language} {sum(1 for r in rows if r['language'] == language)}"
@@ -301,7 +301,7 @@ def _solutions(args) -> int:
     try:
         out = solutions.run(args, TEMPLATE)
     except DHLabError as exc:
-        print(f"dhlab-assign: error: {exc}", file=sys.stderr)
+        print(error_line("dhlab-assign", exc), file=sys.stderr, end="")
         return 2
     print(_("dhlab-assign: the solutions are in {file}: never hand them to students.").format(file=out))
     return 0

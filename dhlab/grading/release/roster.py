@@ -15,8 +15,8 @@ import re
 import unicodedata
 from pathlib import Path
 
+from ...errors import DHLabError
 from ...i18n import _
-from ...validation import DHLabError
 
 __all__ = ["ID_COLUMNS", "RESERVED", "csv_rows", "read_roster", "checked_id", "look_alikes", "id_column_index",
            "safe_filename"]

@@ -16,6 +16,7 @@ that roster). The notebook is in the student's language (the release's manifest,
 """
 from __future__ import annotations
 
+import copy
 import json
 from pathlib import Path
 
@@ -23,10 +24,18 @@ from ...assignment import variants as V
 from ...assignment.notebook_cells import release_notebook
 from ...assignment.solution import solved_notebook
 from ...errors import DHLabError
-from ...i18n import _
+from ...i18n import _, default_language
 from ..options import DEFAULT_SECRET_FILE, shared
 from . import folder
-from .language import default_language, in_language, in_spanish, mark_language, roster_languages, spanish_texts
+from .comments import with_comments
+from .language import (
+    in_language,
+    in_spanish,
+    mark_language,
+    roster_languages,
+    spanish_comments,
+    spanish_texts,
+)
 from .roster import csv_rows, read_roster
 
 __all__ = ["add_parser", "run", "puma_solutions", "student_solutions"]
@@ -37,14 +46,16 @@ def _lines(text: str) -> list:
 
 def puma_solutions(template: dict, language: str = "en") -> dict:
     """The solved notebook of the PUMA 560: the course's student notebook ``template`` with the answers,
-    its text in ``language``."""
-    nb = solved_notebook(template)
+    its text and its code's comments in ``language``."""
+    nb = copy.deepcopy(template)
     if language == "es":
-        spanish = spanish_texts(template)
+        spanish, comments = spanish_texts(template), spanish_comments(template)
         for cell in nb["cells"]:
             if cell.get("id") in spanish:
                 cell["source"] = _lines(spanish[cell["id"]])
-    return mark_language(nb, language)
+            elif cell.get("id") in comments:      # before the answers go in: the marker is found in Spanish
+                cell["source"] = _lines(with_comments("".join(cell["source"]), comments[cell["id"]]))
+    return mark_language(solved_notebook(nb), language)
 
 
 def student_solutions(template: dict, record: dict, language: str = "en") -> dict:
@@ -82,7 +93,7 @@ def _drawn_record(roster: Path, student: str, secret: bytes, families, id_column
         raise DHLabError(_("{student!r} is not in the roster {roster}.").format(student=student, roster=roster))
     variant = V.roster_variants(ids, secret, families)[student]
     languages = roster_languages(csv_rows(roster), ids, default_language(language), roster.name)
-    return V.sign(variant, student, secret), languages[student]
+    return V.sign_record(variant, student, secret), languages[student]
 
 
 def add_parser(sub) -> None:

@@ -51,14 +51,14 @@ from pathlib import Path
 
 try:
     from . import cgroups
-    from .kernel import FLOOD_FACTOR, Kernel  # noqa: F401 (FLOOD_FACTOR: API)
-    from .notebook_code import MAX_CODE_BYTES, MAX_NOTEBOOK_BYTES, NotebookError, read_code_cells, scan_for_tampering  # noqa: F401 (API)
+    from .kernel import FLOOD_FACTOR, Kernel
+    from .notebook_code import MAX_CODE_BYTES, MAX_NOTEBOOK_BYTES, NotebookError, read_code_cells, scan_for_tampering
     from .read_answers import read_answers
     from .sandbox import MAX_PROCESSES, apply_limits
 except ImportError:      # started as a script by the grader (see RUNNER below): this folder is sys.path[0]
     import cgroups
     from kernel import FLOOD_FACTOR, Kernel  # noqa: F401 (API)
-    from notebook_code import MAX_CODE_BYTES, MAX_NOTEBOOK_BYTES, NotebookError, read_code_cells, scan_for_tampering  # noqa: F401 (API)
+    from notebook_code import MAX_CODE_BYTES, MAX_NOTEBOOK_BYTES, NotebookError, read_code_cells, scan_for_tampering
     from read_answers import read_answers
     from sandbox import MAX_PROCESSES, apply_limits
 

@@ -1,8 +1,8 @@
-// The browser side of dhlab's "canvas" backend (dhlab/views/canvas.py).
+// The browser side of dhlab's "canvas" backend (dhlab/views/live/canvas.py).
 //
 // Why: a slider step used to cost a full matplotlib render and a PNG (17 ms in the kernel and
 // 10-20 ms of decoding here). Now the kernel sends, per step, the moving artists as numbers
-// (dhlab/views/scene.py) and this module paints them over a background picture that matplotlib
+// (dhlab/views/live/scene.py) and this module paints them over a background picture that matplotlib
 // made once. When nothing has moved for REST_MS, it asks the kernel for matplotlib's own frame
 // and shows that: at rest the picture is exactly matplotlib's. Dragging a 3D axes turns it
 // here, with mplot3d's own maths (viewMatrix below), and the final view goes back to Python.
@@ -527,7 +527,7 @@ function render({ model, el }) {
 // runs once per widget, when the page creates its model (before any view: a notebook renders an
 // output only when it is scrolled to): the kernel hears that this module runs here. A page that
 // cannot run it (anywidget's front end missing) stays silent, and the kernel then sends PNG frames
-// instead (dhlab/views/canvas.py, watch_front_end).
+// instead (dhlab/views/live/canvas.py, watch_front_end).
 function initialize({ model }) {
   model.send({ kind: "loaded" });
 }

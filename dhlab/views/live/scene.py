@@ -37,7 +37,7 @@ from matplotlib.textpath import TextPath
 from matplotlib.transforms import Affine2D
 from mpl_toolkits.mplot3d import art3d
 
-from .labels import FrameLabels
+from ..labels import FrameLabels
 
 __all__ = ["describe_scene", "describe_artist", "Numbers", "axes_camera", "css_color", "faces3d", "Unsupported"]
 
@@ -176,8 +176,8 @@ def _clip(artist):
     return [float(x0), float(h - y1), float(x1), float(h - y0)]
 
 
-def _points(artist, space) -> np.ndarray:
-    """The artist's points in the coordinates of its space (data; z = 0 in 2D), or pixels."""
+def _points(artist) -> np.ndarray:
+    """The artist's points as it holds them (data coordinates, z = 0 in 2D; or pixels, for an artist drawn in them)."""
     if isinstance(artist, art3d.Line3D):
         return np.column_stack(artist.get_data_3d()).astype(float)
     xy = np.column_stack(artist.get_data()).astype(float) if len(artist.get_xdata()) else np.zeros((0, 2))
@@ -191,7 +191,7 @@ def _in_data_space(artist, space) -> bool:
 def _line(line, space, numbers, scale) -> dict:
     if line.get_drawstyle() != "default" or line.get_markevery() is not None:
         raise Unsupported("Line2D drawstyle/markevery")
-    points = _points(line, space)
+    points = _points(line)
     if not _in_data_space(line, space):
         if isinstance(line, art3d.Line3D):
             raise Unsupported("Line3D with its own transform")

@@ -1,4 +1,4 @@
-// The browser's half of dhlab/views/rig.py: the chain's kinematics, and the picture moved with it.
+// The browser's half of dhlab/views/live/rig.py: the chain's kinematics, and the picture moved with it.
 //
 // When a slider moves, its new value is here at once; the kernel's picture of the new pose comes
 // a round trip later. With the chain's kinematics program (the same steps dhlab.kinematics runs)

@@ -2,7 +2,7 @@
 end-effector pose and matrix read live.
 
 >>> import dhlab
->>> from dhlab.views.teach import teach                 # also dhlab.teach
+>>> from dhlab.views.panels.teach import teach   # also dhlab.teach, dhlab.views.teach
 >>> panel = teach(dhlab.robots.ssrms())           # display it: last line of a cell
 >>> panel.sliders[1].value = 30                   # degrees, exactly like dragging it
 >>> round(float(panel.q[1]), 6)                   # the maths gets radians
@@ -17,12 +17,14 @@ from __future__ import annotations
 import ipywidgets as widgets
 import numpy as np
 
-from ..i18n import _
-from ..transforms import rpy
-from ..validation import DHLabError, as_flag
+from ...errors import DHLabError
+from ...i18n import _
+from ...transforms import rpy
+from ...validation import as_flag
+from ..poses import checked_start, default_q, q_to_slider, slider_to_q
+from ..view import robot_view
+from ..viewbase import checked_robot
 from .panel import Panel, follow_sliders, joint_sliders, view_controls
-from .poses import checked_start, default_q, q_to_slider, slider_to_q
-from .view import checked_robot, robot_view
 
 __all__ = ["teach", "TeachPanel", "pose_text", "matrix_html"]
 

@@ -1,12 +1,12 @@
 """Which way a live figure reaches the browser: its *backend*, chosen once when it is made.
 
-:class:`~dhlab.views.livefigure.LiveFigure` has three (``backend=``; ``DHLAB_BACKEND=canvas|ipympl|image``
+:class:`~dhlab.views.live.livefigure.LiveFigure` has three (``backend=``; ``DHLAB_BACKEND=canvas|ipympl|image``
 in the environment overrides ``"auto"``):
 
 * ``"ipympl"`` under ``%matplotlib widget``: an interactive canvas widget, sent the changed pixels
-  (:mod:`dhlab.views.ipympl_canvas`);
+  (:mod:`dhlab.views.live.ipympl_canvas`);
 * ``"canvas"`` in a Jupyter kernel where anywidget imports: the browser paints the moving artists
-  from numbers the kernel sends (:mod:`dhlab.views.canvas`);
+  from numbers the kernel sends (:mod:`dhlab.views.live.canvas`);
 * ``"image"`` elsewhere (a script, a test, a page without anywidget): a PNG after each update.
 
 >>> choose_backend("image"), "auto" in BACKENDS
@@ -19,8 +19,8 @@ import sys
 
 import matplotlib
 
-from ..i18n import _
-from ..validation import DHLabError
+from ...errors import DHLabError
+from ...i18n import _
 
 __all__ = ["BACKENDS", "choose_backend", "ipympl_active", "in_kernel", "anywidget_imports"]
 

@@ -1,6 +1,6 @@
 """ipympl's canvas for a live figure under ``%matplotlib widget``, with a faster PNG packer.
 
-:class:`~dhlab.views.livefigure.LiveFigure`'s "ipympl" backend (:mod:`dhlab.views.backend`)
+:class:`~dhlab.views.live.livefigure.LiveFigure`'s "ipympl" backend (:mod:`dhlab.views.live.backend`)
 gives its figure this canvas without going through pyplot. ipympl is imported on first use:
 only ``%matplotlib widget`` needs it.
 """

@@ -40,12 +40,14 @@ from matplotlib.patches import Rectangle
 from matplotlib.ticker import MultipleLocator
 from matplotlib.transforms import offset_copy
 
-from ..i18n import _
-from ..validation import DHLabError, as_choice, as_length, check_joint_values, describe
-from .livefigure import LiveFigure
+from ...errors import DHLabError
+from ...i18n import _
+from ...validation import as_choice, as_length, check_joint_values, describe
+from ..live.livefigure import LiveFigure
+from ..poses import checked_start, default_q, q_to_slider, unit_of
+from ..view import robot_view
+from ..viewbase import checked_robot
 from .panel import Panel, SliderEchoes, follow_sliders, joint_sliders
-from .poses import checked_start, default_q, q_to_slider, unit_of
-from .view import checked_robot, robot_view
 
 __all__ = ["spaces", "SpacesPanel", "wrap_into_limits"]
 

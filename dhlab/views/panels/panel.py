@@ -21,13 +21,13 @@ import traceback
 import ipywidgets as widgets
 import numpy as np
 
-from ..i18n import _
-from .figures import projector_scale
-from .keys import FIGURE_CLASS, slider_keys
-from .livefigure import LiveFigure, forget_previous_run
-from .poses import checked_start, q_to_slider, slider_to_q, unit_of
-from .projector import widgets_scale
-from .rig import Rig
+from ...i18n import _
+from ..figures import projector_scale
+from ..live.keys import FIGURE_CLASS, slider_keys
+from ..live.livefigure import LiveFigure, forget_previous_run
+from ..live.rig import Rig
+from ..poses import checked_start, q_to_slider, slider_to_q, unit_of
+from ..projector import widgets_scale
 
 __all__ = ["Panel", "joint_sliders", "slider_to_q", "q_to_slider", "unit_of", "checked_start", "follow_sliders",
            "view_controls", "SliderEchoes"]
@@ -45,7 +45,7 @@ def control_width(px: float) -> str:
 
 def follow_sliders(view, sliders) -> None:
     """With the canvas backend, let the browser move ``view``'s robot as soon as one of the
-    joint ``sliders`` moves, before the kernel's picture arrives (see :mod:`dhlab.views.rig`;
+    joint ``sliders`` moves, before the kernel's picture arrives (see :mod:`dhlab.views.live.rig`;
     the browser converts the slider's display units with the same rule as :func:`slider_to_q`)."""
     live = view.live
     if live is None or live.backend != "canvas":
@@ -121,7 +121,7 @@ class SliderEchoes:
     When the kernel sets a slider to a value between two of its steps, the browser
     rounds it to a step and sends the rounded value back. That echo may arrive late:
     during Run All, after a later cell has moved the panel again. A panel whose
-    sliders are coupled (the joints and the target of :func:`~dhlab.views.spaces.spaces`)
+    sliders are coupled (the joints and the target of :func:`~dhlab.views.panels.spaces.spaces`)
     that took a late echo for a student's move would move the robot back, set the
     other sliders, get *their* echoes, and so on: the panel drifted on its own.
 
@@ -214,7 +214,7 @@ class Panel(widgets.HBox):
 
     @property
     def keys_widget(self):
-        """The invisible widget that gives a focused slider its arrow keys (:mod:`dhlab.views.keys`),
+        """The invisible widget that gives a focused slider its arrow keys (:mod:`dhlab.views.live.keys`),
         or None: anywidget is missing, or the page cannot run its module (the figure fell back to PNG)."""
         return self._keys
 

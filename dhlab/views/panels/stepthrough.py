@@ -23,27 +23,19 @@ import math
 import ipywidgets as widgets
 import numpy as np
 
-from ..i18n import N_, _
-from ..transforms import Rx, Rz, trans
-from ..validation import (
-    DHLabError,
-    as_angle,
-    as_index,
-    as_length,
-    as_matrix4,
-    as_number,
-    as_text,
-    describe,
-    has_angle_mark,
-)
-from .camera import set_camera
-from .layout import keep_texts_inside, space_ticks
-from .livefigure import LiveFigure
+from ...errors import DHLabError
+from ...i18n import N_, _
+from ...transforms import Rx, Rz, trans
+from ...validation import as_angle, as_index, as_length, as_matrix4, as_number, as_text, describe, has_angle_mark
+from ..camera import set_camera
+from ..labels import FrameLabels3D
+from ..layout import keep_texts_inside, space_ticks
+from ..live.livefigure import LiveFigure
+from ..poses import checked_start
+from ..triads import LETTER_MARKERS, axis_colors, letter_points, triad_segments
+from ..viewbase import checked_robot, line_in_box
 from .panel import Panel
-from .poses import checked_start
 from .teach import matrix_html
-from .triads import LETTER_MARKERS, axis_colors, letter_points, triad_segments
-from .view import FrameLabels3D, checked_robot, line_in_box
 
 __all__ = ["dh_partial", "dh_params", "motion_text", "stepthrough", "stepthrough_link",
            "StepThroughPanel", "MOTIONS"]

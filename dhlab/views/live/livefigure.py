@@ -15,7 +15,7 @@ the environment overrides ``"auto"``):
   changed pixels to the browser.
 * ``"canvas"`` (the default in a Jupyter kernel where anywidget imports): the browser
   paints the moving artists over the cached background from numbers the kernel sends,
-  and shows matplotlib's own frame whenever the figure rests (:mod:`dhlab.views.canvas`);
+  and shows matplotlib's own frame whenever the figure rests (:mod:`dhlab.views.live.canvas`);
   a 3D view turns with the mouse in the browser.
 * the default inline backend: the figure is shown in an ``ipywidgets.Image``
   that receives a fresh PNG after each update. (No ``Output`` widget is used:
@@ -43,8 +43,8 @@ import weakref
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 
+from ..figures import new_figure
 from .backend import BACKENDS, choose_backend, ipympl_active
-from .figures import new_figure
 from .ipympl_canvas import attach_ipympl_canvas
 from .notebook_cell import forget_previous_run, watch_front_end
 from .png import PNG_WITH_ALPHA, encode_png
@@ -55,7 +55,7 @@ from .png import PNG_WITH_ALPHA, encode_png
 __all__ = ["LiveFigure", "ipympl_active", "forget_previous_run", "watch_front_end", "encode_png", "BACKENDS",
            "choose_backend", "MOTION_S", "REDRAW_EVERY_S"]
 
-# The canvas path's module (dhlab.views.canvas) is imported inside the methods that take that
+# The canvas path's module (dhlab.views.live.canvas) is imported inside the methods that take that
 # path: it brings anywidget, which takes longer to import (~0.2 s) than this whole module.
 
 # ipympl loses a diff frame now and then, which leaves stale pixels until the
@@ -212,7 +212,7 @@ class LiveFigure:
     # --- showing -------------------------------------------------------------------
     @property
     def widget(self):
-        """The widget that shows the figure: a :class:`~dhlab.views.canvas.CanvasWidget`,
+        """The widget that shows the figure: a :class:`~dhlab.views.live.canvas.CanvasWidget`,
         ipympl's canvas, or an ``ipywidgets.Image``."""
         if self.uses_ipympl:
             return self.figure.canvas
@@ -311,10 +311,10 @@ class LiveFigure:
     def _encode(self) -> bytes:
         return encode_png(np.asarray(self.figure.canvas.buffer_rgba()), alpha=PNG_WITH_ALPHA)
 
-    # --- the canvas path (see dhlab.views.canvas) -------------------------------------------
+    # --- the canvas path (see dhlab.views.live.canvas) -------------------------------------------
     @property
     def canvas_widget(self):
-        """The :class:`~dhlab.views.canvas.CanvasWidget` of the canvas path once it is shown, else None."""
+        """The :class:`~dhlab.views.live.canvas.CanvasWidget` of the canvas path once it is shown, else None."""
         return self._canvas
 
     def _canvas_widget(self):

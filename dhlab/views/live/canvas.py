@@ -5,23 +5,23 @@ Why: with the PNG backends every slider step costs a full Agg render and a PNG i
 frames a second. Here (an anywidget, its ES module ``canvas.js``):
 
 * matplotlib renders the figure **without** the moving artists once (the *background*, the
-  picture :class:`~dhlab.views.livefigure.LiveFigure` already keeps for blitting), and again
+  picture :class:`~dhlab.views.live.livefigure.LiveFigure` already keeps for blitting), and again
   only when it changes (reframing, camera, zoom, labels toggled, the screen's pixel ratio);
-* each refresh sends the moving artists as numbers (:mod:`dhlab.views.scene`) in one custom
+* each refresh sends the moving artists as numbers (:mod:`dhlab.views.live.scene`) in one custom
   message with a float32 buffer (not a trait: no echo, nothing kept); the browser projects them
   with the axes' own matrices and paints them over the background;
 * when no pose has arrived for 150 ms, the browser asks for the **rest frame**: matplotlib
   draws the whole figure with Agg and sends it as a PNG, shown instead of the overlay. At rest
   the picture is exactly matplotlib's;
-* with a rig (:mod:`dhlab.views.rig`: a teach or spaces panel), the browser moves the robot
+* with a rig (:mod:`dhlab.views.live.rig`: a teach or spaces panel), the browser moves the robot
   itself as soon as a joint slider moves, and the kernel's scene of that pose replaces it;
 * dragging a 3D axes turns it in the browser; on release the final (elev, azim) comes back
   here, the axes take that view and matplotlib redraws;
 * a notebook page that cannot run ``canvas.js`` (anywidget's front end is not installed where
   JupyterLab runs) never says "loaded": after a few seconds the figure falls back to PNG
-  frames (the "image" backend) in the same place (:func:`dhlab.views.notebook_cell.watch_front_end`).
+  frames (the "image" backend) in the same place (:func:`dhlab.views.live.notebook_cell.watch_front_end`).
 
-An artist the browser cannot paint (see :class:`~dhlab.views.scene.Unsupported`) makes that
+An artist the browser cannot paint (see :class:`~dhlab.views.live.scene.Unsupported`) makes that
 figure send a full matplotlib frame at every step instead (the old cost, never a wrong
 picture). Without a browser (nbval, scripts) nothing waits for one: the messages go nowhere.
 """
@@ -122,7 +122,7 @@ class CanvasWidget(anywidget.AnyWidget):
 
     # --- what the kernel sends ----------------------------------------------------------------
     def send_scene(self, content: dict, numbers) -> None:
-        """The moving artists (see :func:`dhlab.views.scene.describe_scene`)."""
+        """The moving artists (see :func:`dhlab.views.live.scene.describe_scene`)."""
         self.send(dict(content, kind="scene"), buffers=[memoryview(numbers.tobytes())])
 
     def show_frame(self, png: bytes, seq: int) -> None:
@@ -147,7 +147,7 @@ def send_scene(live) -> None:
 
 
 def send_rig(live) -> None:
-    """How the picture hangs on the chain (:mod:`dhlab.views.rig`), if the figure has a rig:
+    """How the picture hangs on the chain (:mod:`dhlab.views.live.rig`), if the figure has a rig:
     the browser then moves it as soon as a slider moves."""
     if live.rig is None:
         return

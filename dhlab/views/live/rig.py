@@ -30,10 +30,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..kinematics import elementary
+from ...kinematics import Program, run
 from .scene import Numbers, Unsupported, describe_artist
 
-__all__ = ["program_steps", "nodes", "fit", "Rig", "TOLERANCE", "PROBES"]
+__all__ = ["program_steps", "nodes", "node_program", "fit", "Rig", "TOLERANCE", "PROBES"]
 
 TOLERANCE = 1e-7          # a point is fixed in a node if it moves less than this x the robot's size
 PROBES = 3                # random poses tried besides the current one
@@ -61,19 +61,19 @@ def _flat(M) -> list:
 
 def nodes(robot, q) -> np.ndarray:
     """Every node of the chain at ``q``: (K, 4, 4), node 0 the world (identity), then the
-    running product after each step of :func:`program_steps` (what ``chain.js`` computes)."""
-    q = np.asarray(q, dtype=float)
-    T = np.eye(4)
-    out = [T]
-    for step in program_steps(robot):
-        kind = step[0]
-        if kind == "const":
-            T = T @ np.array(step[1]).reshape(4, 4)
-        else:
-            _, axis, joint, sign, offset = step
-            T = T @ elementary("R" if kind == "rot" else "T", axis, sign * q[joint] + offset)
-        out.append(T)
-    return np.array(out)
+    running product after each step of :func:`program_steps` (what ``chain.js`` computes);
+    for P poses at once, ``q`` of shape (P, n), (P, K, 4, 4).
+
+    Run by :func:`dhlab.kinematics.run`, the course's one forward-kinematics path: the robot's
+    own program, with a frame kept after every step instead of after every link."""
+    return run(node_program(robot), np.asarray(q, dtype=float), frames=True)
+
+
+def node_program(robot) -> Program:
+    """The robot's kinematics program with a ``("frame",)`` after each step (its own link ends
+    dropped) and the world as its base: run with ``frames=True``, it gives every node."""
+    steps = [kept for step in robot._program.steps if step[0] != "frame" for kept in (step, ("frame",))]
+    return Program(base=np.eye(4), steps=steps)
 
 
 def fit(points, node_poses, size: float) -> tuple:
@@ -143,7 +143,7 @@ class Rig:
             view._place(view.frames)
             for artist in moving:                  # labels placed for a probe: place them afresh
                 artist.__dict__.pop("_dhlab_placed", None)
-        node_poses = np.array([nodes(robot, q) for q in poses])
+        node_poses = nodes(robot, np.array(poses))
         size = max(float(robot.reach()), 1e-6)
         numbers, artists = Numbers(), {}
         for k in mine:
