@@ -66,7 +66,7 @@ def main(argv=None):
 
     methods = {}
     methods["dhlab batch"] = (lambda: robot.fk(Q), args.n)
-    methods["no input check"] = (lambda: dhlab.kinematics.run(robot._program, Q), args.n)
+    methods["no input check"] = (lambda: dhlab.kinematics.run(robot.program, Q), args.n)
     methods["numpy matmul"] = (lambda: numpy_matmul_fk(robot, Q), args.n)
     n_loop = min(args.n, 5_000)
     methods["dhlab loop"] = (lambda: np.array([robot.fk(q) for q in Q[:n_loop]]), n_loop)

@@ -103,6 +103,12 @@ class Robot:
     def _compile(self):
         self._program = kinematics.compile_chain(self._numeric, self._base, self._tool)
 
+    @property
+    def program(self):
+        """The chain compiled for :func:`dhlab.kinematics.run` (rebuilt when ``base`` or ``tool``
+        changes): what :meth:`fk` and :meth:`frames` run, and what the browser's rig is made from."""
+        return self._program
+
     # --- construction helpers ------------------------------------------------
     @staticmethod
     def _fixed_transform(T, name):

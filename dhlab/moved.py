@@ -6,9 +6,10 @@ The package was split into maths (``dhlab/``), ``views/``, ``course/``, ``assign
 each old name with the module at its new place — the very same module object, imported only when
 the old name is, so that ``import dhlab`` stays light.
 
-Two old paths stay for good, silently (:data:`KEPT`): notebooks already handed to students import
-them in locked cells. Every other old path warns (a ``DeprecationWarning`` naming the new place,
-pointed at the line that imports it) and goes in version 0.2 (docs/developers/changelog.md).
+Five old paths stay for good, silently (:data:`KEPT`): notebooks already handed to students import
+them (the assignment's locked cells; a student's own copy of a lesson). Every other old path warns
+(a ``DeprecationWarning`` naming the new place, pointed at the line that imports it) and goes in
+version 0.2 (docs/developers/changelog.md).
 
 >>> import dhlab.livefigure, dhlab.views.livefigure, dhlab.views.live.livefigure
 >>> dhlab.livefigure is dhlab.views.livefigure is dhlab.views.live.livefigure
@@ -53,8 +54,11 @@ MOVED = {
     "dhlab.grading.generate": "dhlab.grading.release.generate",
 }
 
-# imported by notebooks already released to students (locked cells): never warn, never removed
-KEPT = ("dhlab.course.assignment", "dhlab.course.family_notebook")
+# never warn, never removed: the notebooks already released to students import the first two (locked
+# cells); the course's own lesson notebooks imported the panels from the other three until 0.1.0, and a
+# student's copy of them (make lab's my-notebooks/, never overwritten once edited) still does
+KEPT = ("dhlab.course.assignment", "dhlab.course.family_notebook",
+        "dhlab.views.teach", "dhlab.views.stepthrough", "dhlab.views.spaces")
 REMOVED_IN = "0.2"
 
 

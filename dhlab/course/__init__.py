@@ -16,7 +16,8 @@ Three sub-packages, each importing only the ones above it in this list (and the 
 and :mod:`dhlab.course.predict` (notebooks 5 and 6: predict, then check, then reveal).
 
 The course imports neither :mod:`dhlab.assignment` nor :mod:`dhlab.grading`. Three old names still
-import, for notebooks already in use (one release; :mod:`dhlab.moved` answers them, no file here):
-``dhlab.course.exercises_dh`` (now :mod:`dhlab.course.exercises`), ``dhlab.course.assignment`` and
-``dhlab.course.family_notebook`` (the PUMA assignment is its own package, :mod:`dhlab.assignment`).
+import (:mod:`dhlab.moved` answers them, no file here): ``dhlab.course.exercises_dh`` (now
+:mod:`dhlab.course.exercises`; it warns, and goes in 0.2), and, for good, ``dhlab.course.assignment`` and
+``dhlab.course.family_notebook``, which notebooks already released to students import (the PUMA
+assignment is its own package, :mod:`dhlab.assignment`).
 """

@@ -33,7 +33,7 @@ This package runs them on a whole class, in four sub-packages:
   (:mod:`~dhlab.grading.export.lms`).
 
 The command line is :mod:`dhlab.grading.cli` (``dhlab-grade puma SUBMISSIONS_DIR -o gradebook.csv
-[--secret-file KEY --release DIR]``, also ``python -m dhlab.grade``); one run's state, shared by its
+[--secret-file KEY --release DIR]``, also ``python -m dhlab.grading.cli``); one run's state, shared by its
 workers, is :mod:`dhlab.grading.batch`. Within the package the sub-packages
 import one another only through their public names; ``run`` reads nothing of ``book`` or ``export``.
 """

@@ -55,7 +55,7 @@ class Batch:
                 if row.get("_started", -1) >= 0 and row["_ended"] > self.checked_ok:
                     self.discarded.append(name)
                     del self.rows[name]
-            self._write()
+            self.write()
             return False
 
     def add(self, row, started, ended) -> None:
@@ -68,7 +68,7 @@ class Batch:
             row["_started"], row["_ended"] = started, ended
             write_atomic(self.feedback_dir / row["feedback"], text)
             self.rows[row["submission"]] = row
-            self._write()
+            self.write()
 
     def cannot_write(self, submission: str, exc: OSError) -> None:
         """The gradebook or a feedback file could not be written (a full disk, a folder removed): the
@@ -81,7 +81,8 @@ class Batch:
                                  "same command with --resume.").format(file=exc.filename or self.options.output,
                                                                         why=exc.strerror or exc)
 
-    def _write(self) -> None:
+    def write(self) -> None:
+        """The gradebook, written again (atomically) from the rows kept so far."""
         write_csv(self.options.output, self.rows.values(), self.options.columns)
         self.written = True
 

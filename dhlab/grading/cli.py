@@ -254,7 +254,7 @@ def _run_batch(argv, options, folder, paths, feedback_dir, resolve, interrupts) 
         batch = Batch(options, feedback_dir, keep + (removed if options.resume else []), file_digests, interrupts)
         graded, elapsed = _grade_all(batch, todo, iso)
         if not interrupts.count and not batch.written:
-            batch._write()                        # nothing new graded: the kept rows (and the removed ones)
+            batch.write()                        # nothing new graded: the kept rows (and the removed ones)
     finally:
         if copies is not None:
             shutil.rmtree(copies, ignore_errors=True)

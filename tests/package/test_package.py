@@ -114,15 +114,16 @@ def test_old_paths_warn_where_they_are_imported_except_the_released_notebooks():
         "import warnings\n"
         "warnings.simplefilter('always')\n"
         "with warnings.catch_warnings(record=True) as seen:\n"
-        "    from dhlab.views.teach import teach\n"
+        "    from dhlab.views.livefigure import LiveFigure\n"
         "    import dhlab.assign.frames\n"
         "    from dhlab.course.assignment import Tz\n"
         "    from dhlab.course.family_notebook import use_variant\n"
+        "    from dhlab.views.teach import teach\n"
         "for w in seen:\n"
         "    print(w.category.__name__, w.filename, w.lineno, str(w.message).split(':')[0])\n")
     assert out.returncode == 0, out.stderr
     assert out.stdout.splitlines() == [
-        "DeprecationWarning <string> 4 dhlab.views.teach moved to dhlab.views.panels.teach",
+        "DeprecationWarning <string> 4 dhlab.views.livefigure moved to dhlab.views.live.livefigure",
         "DeprecationWarning <string> 5 dhlab.assign moved to dhlab.dh_frames",
         "DeprecationWarning <string> 5 dhlab.assign.frames moved to dhlab.dh_frames.frames"]
 

@@ -1,4 +1,4 @@
-"""The canvas backend of LiveFigure (dhlab/views/canvas.py, scene.py): what it sends, its rest
+"""The canvas backend of LiveFigure (dhlab/views/live/canvas.py, scene.py): what it sends, its rest
 frame, its fallback, and what it does with bad input from the browser or the user."""
 from __future__ import annotations
 

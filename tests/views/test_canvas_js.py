@@ -1,4 +1,4 @@
-"""The browser layer's maths (dhlab/views/canvas.js) against matplotlib's, run in node.
+"""The browser layer's maths (dhlab/views/live/canvas.js) against matplotlib's, run in node.
 
 For every catalogue robot, in its 3D view and (if planar) its 2D view, at random poses: the pixel
 the browser computes for every moving point (links, mechanism faces, triads, letters, labels'

@@ -1,4 +1,4 @@
-"""The rig (dhlab/views/rig.py, rig.js): the browser moves the robot's picture as soon as a slider
+"""The rig (dhlab/views/live/rig.py, rig.js): the browser moves the robot's picture as soon as a slider
 moves, from the chain's kinematics and each point's node; it must land where the kernel's next
 picture puts it.
 

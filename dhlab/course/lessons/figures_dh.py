@@ -212,7 +212,7 @@ def common_normals_figure(axes, tool=None, length: float = 0.22):
     ax.view_init(**_EXERCISE_CAMERA)
     ax.set_title(_("common normals of $z_0 z_1$, $z_1 z_2$, $z_2 z_3$"), fontsize=13)
     side = fig.add_subplot(1, 2, 2)
-    _along_y(side, axes, lines, length, tool)
+    _along_y(side, lines, length, tool)
     return fig
 
 
@@ -225,7 +225,7 @@ def common_normals_after(answer, axes, tool=None):
     return common_normals_figure(axes, tool)
 
 
-def _along_y(ax, axes, lines, length, tool):
+def _along_y(ax, lines, length, tool):
     """The axes seen along +y (x to the right, z up): an axis along y is a point (⊗: pointing away)."""
     for k, line in enumerate(lines):                  # the line of the axis z_k
         p2, u2 = line.point[[0, 2]], line.direction[[0, 2]]

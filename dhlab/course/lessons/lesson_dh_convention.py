@@ -24,7 +24,7 @@ from ...i18n import N_, _
 from ...lines import Line, closest_points, relation
 from ...transforms import check_rigid, dh_matrix
 from ...validation import as_float_array
-from .printing import fmt as vector_text
+from . import printing
 
 __all__ = ["fmt", "three_cases", "XPlacement", "place_x", "measured_row", "measured_rows_agree",
            "prismatic_a_lines"]
@@ -34,8 +34,8 @@ CASES = {"intersect": 1, "parallel": 2, "skew": 3}       # rule 7's three cases,
 
 def fmt(v, digits: int = 6) -> str:
     """A vector as ``(x, y, z)``, rounded to ``digits`` decimals, trailing zeros and ``-0`` dropped
-    (notebooks 5 and 6; see :mod:`~dhlab.course.lessons.vector_text`)."""
-    return vector_text(v, digits, trim=True)
+    (notebooks 5 and 6; see :func:`dhlab.course.lessons.printing.fmt`)."""
+    return printing.fmt(v, digits, trim=True)
 
 
 def three_cases():

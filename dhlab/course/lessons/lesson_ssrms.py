@@ -23,15 +23,15 @@ import sympy as sp
 from ...errors import DHLabError
 from ...i18n import _
 from ...lines import relation
-from .printing import fmt as vector_text
+from . import printing
 
 __all__ = ["fmt", "factors_latex", "frames_table", "same_axes", "seed_words", "axis_relations"]
 
 
 def fmt(v, digits: int = 3) -> str:
     """The vector ``v`` as ``(x, y, z)``, rounded to ``digits`` decimals, trailing zeros and -0 dropped
-    (see :mod:`~dhlab.course.lessons.vector_text`)."""
-    return vector_text(v, digits, trim=True)
+    (see :func:`dhlab.course.lessons.printing.fmt`)."""
+    return printing.fmt(v, digits, trim=True)
 
 
 def factors_latex(config, per_line: int = 4) -> str:

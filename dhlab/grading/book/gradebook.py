@@ -115,7 +115,7 @@ class Cells:
     """A notebook's code cells, named the way a student finds them: counted from the top among
     the code cells only (Jupyter shows no cell numbers, and markdown cells are not code), and
     quoted by their first line. ``code_cells``: [(number among all cells, source)], as
-    :func:`dhlab.grading.run.runner.read_code_cells` gives them; without them, the runner's numbers.
+    :func:`dhlab.grading.run.notebook_code.read_code_cells` gives them; without them, the runner's numbers.
 
     >>> cells = Cells([(2, "import numpy as np"), (5, "# Part 2: write link_points below\\nlink_points = [")])
     >>> cells.number(5), cells.quote(5), cells.answer_parts(5)

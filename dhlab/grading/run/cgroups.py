@@ -112,12 +112,6 @@ class SubmissionGroup:
             return 1 if failcnt and failcnt.strip() not in ("", "0") else 0
         return 0
 
-    def peak_mb(self) -> float:
-        """The most memory the submission used at once (0 when the kernel does not say)."""
-        name = "memory.peak" if self.kind == "v2" else "memory.max_usage_in_bytes"
-        value = (_read(os.path.join(self.dirs[0], name)) or "").strip()
-        return int(value) / MB if value.isdigit() else 0.0
-
     def kill_all(self, tries: int = 50) -> bool:
         """SIGKILL every process in the group until none is left (a fork in between is caught next round)."""
         kill_file = os.path.join(self.dirs[0], "cgroup.kill")

@@ -45,7 +45,7 @@ def program_steps(robot) -> list:
     applied on the right of the running product, which starts as the identity (the base is
     the first constant step)."""
     steps = []
-    for step in robot._program.steps:
+    for step in robot.program.steps:
         if step[0] == "const":
             steps.append(["const", _flat(step[1])])
         elif step[0] in ("rot", "move"):
@@ -72,7 +72,7 @@ def nodes(robot, q) -> np.ndarray:
 def node_program(robot) -> Program:
     """The robot's kinematics program with a ``("frame",)`` after each step (its own link ends
     dropped) and the world as its base: run with ``frames=True``, it gives every node."""
-    steps = [kept for step in robot._program.steps if step[0] != "frame" for kept in (step, ("frame",))]
+    steps = [kept for step in robot.program.steps if step[0] != "frame" for kept in (step, ("frame",))]
     return Program(base=np.eye(4), steps=steps)
 
 
