@@ -26,7 +26,7 @@ import numpy as np
 
 from ..errors import DHLabError
 from ..i18n import _
-from ..validation import as_angle, as_index, as_length, as_number, check_joint_values, decimal_comma_note, describe
+from ..validation import as_angle, as_index, as_length, as_number, check_joint_values, describe, with_decimal_comma_note
 from ..validation.marks import has_angle_mark, is_angle
 from .answers import MAX_NUMBER
 
@@ -97,9 +97,9 @@ def term_parts(value, what: str) -> tuple:
     text = str(value).replace("−", "-").replace("°", "")
     m = _TERM_TEXT.match(text)
     if not m or (m["c1"] and m["c2"]) or (m["c1"] and not m["s"]):
-        note = decimal_comma_note(value)                         # "0,4": a decimal comma
-        raise DHLabError(_("{what} must be a number or ±q_i + a constant, like q2 + 90, got {value}.").format(
-            what=what, value=repr(value)) + (" " + note if note else ""))
+        raise DHLabError(with_decimal_comma_note(                 # "0,4": a decimal comma
+            _("{what} must be a number or ±q_i + a constant, like q2 + 90, got {value}.").format(
+                what=what, value=repr(value)), value))
     const = float((m["c1"] or m["c2"] or "0").replace(" ", ""))
     return int(m["j"]), -1 if m["s"] == "-" else 1, const
 

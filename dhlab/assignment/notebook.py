@@ -42,7 +42,7 @@ import numpy as np
 from .. import transforms
 from ..errors import DHLabError
 from ..i18n import _, current_language, speaking
-from ..validation import decimal_comma_note, describe
+from ..validation import describe, with_decimal_comma_note
 from . import checks
 from . import inputs as _inputs
 from .answers import Row, answers_from_namespace, parse_answers
@@ -175,10 +175,8 @@ def _two_values(name: str, names: str, values: tuple) -> None:
     """A clear message, not Python's TypeError, when Tz or Tx gets more than its two values
     (decimal commas, ``Tz(q1, 0,4)``, are the usual reason: the message says so)."""
     if len(values) > 2:
-        note = decimal_comma_note(values, 2)
-        raise DHLabError(_("{name} takes two values ({names}); got {count}: {values}.").format(
-            name=name, names=names, count=len(values), values=", ".join(map(str, values)))
-            + (" " + note if note else ""))
+        raise DHLabError(with_decimal_comma_note(_("{name} takes two values ({names}); got {count}: {values}.").format(
+            name=name, names=names, count=len(values), values=", ".join(map(str, values))), values, 2))
 
 
 def Tz(theta, d, *more) -> ZFactor:

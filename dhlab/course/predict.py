@@ -28,7 +28,7 @@ from ..dh import DHRobot, parse_entry
 from ..errors import DHLabError
 from ..i18n import _
 from ..transforms import Rx, Rz, trans
-from ..validation import as_index, as_text, decimal_comma_note, describe
+from ..validation import as_index, as_text, describe, with_decimal_comma_note
 from .checks.feedback import Feedback
 from .checks.reading import Refused, is_unanswered, to_vector
 from .exercises.dh_common import axis_relation, number_text, row_at_zero, vector_text, wrong_answer
@@ -102,8 +102,8 @@ def _at_pose(row, robot, i, q):
     """The student's row as numbers at ``q`` (a joint variable by name takes its value there;
     revolute ones in degrees, as the table's angles), or a reason."""
     if not isinstance(row, (list, tuple)) or len(row) != 4:
-        problem = _("give the row as four entries (θ, d, a, α), got {got}.").format(got=describe(row))
-        return None, " ".join(filter(None, [problem, decimal_comma_note(row, 4)]))
+        return None, with_decimal_comma_note(
+            _("give the row as four entries (θ, d, a, α), got {got}.").format(got=describe(row)), row, 4)
     joints = {str(s): s for s in robot.q_symbols}
     values, variable_in = [], []
     for value, column in zip(row, "θdaα"):

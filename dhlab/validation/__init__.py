@@ -55,7 +55,7 @@ from __future__ import annotations
 
 from ..errors import DHLabError
 from .arrays import as_float_array, as_matrix4, as_sequence, as_sym_matrix4, as_vector, check_finite, rigid_problem
-from .decimal_commas import decimal_comma_note, looks_like_decimal_comma
+from .decimal_commas import decimal_comma_note, looks_like_decimal_comma, with_decimal_comma_note
 from .joints import as_qlim, check_joint_values
 from .marks import Angle, AngleArray, has_angle_mark, is_angle
 from .values import (
@@ -80,5 +80,5 @@ __all__ = [
     "as_index", "as_float_array", "as_vector", "check_joint_values", "as_matrix4", "as_sym_matrix4",
     "rigid_problem", "as_qlim", "as_choice", "as_flag", "as_text", "as_timeout", "has_angle_mark",
     "check_length_size", "as_sequence", "check_finite", "real_number", "Angle", "AngleArray", "is_angle",
-    "decimal_comma_note", "looks_like_decimal_comma",
+    "decimal_comma_note", "looks_like_decimal_comma", "with_decimal_comma_note",
 ]

@@ -19,7 +19,7 @@ import numpy as np
 from ..errors import DHLabError
 from ..i18n import N_, _
 from ..lazy_sympy import is_matrix
-from .decimal_commas import decimal_comma_note
+from .decimal_commas import with_decimal_comma_note
 from .marks import Angle
 from .values import describe, real_number
 
@@ -54,9 +54,9 @@ def as_sequence(x, name: str, expected: str, size: int | None = None) -> list:
     if size is not None and len(items) != size:
         message = (_("{name} must be {expected}: {size} item, got {k}: {value}.") if size == 1 else
                    _("{name} must be {expected}: {size} items, got {k}: {value}."))
-        note = decimal_comma_note(items, size)          # ("q1", 0,4, 0,35, 0) has six items, not four
-        raise DHLabError(message.format(name=name, expected=expected, size=size, k=len(items), value=describe(x))
-                         + (" " + note if note else ""))
+        # ("q1", 0,4, 0,35, 0) has six items, not four
+        raise DHLabError(with_decimal_comma_note(
+            message.format(name=name, expected=expected, size=size, k=len(items), value=describe(x)), items, size))
     return items
 
 
@@ -148,9 +148,9 @@ def as_vector(x, name: str, size: int) -> np.ndarray:
     """``size`` finite numbers as a float array of shape (size,)."""
     arr = as_float_array(x, name)
     if arr.shape != (size,):
-        note = decimal_comma_note(arr.ravel().tolist(), size) if arr.ndim == 1 else ""
-        raise DHLabError(_("{name} must be {size} numbers, got shape {shape}: {value}.").format(
-            name=name, size=size, shape=arr.shape, value=describe(x)) + (" " + note if note else ""))
+        message = _("{name} must be {size} numbers, got shape {shape}: {value}.").format(
+            name=name, size=size, shape=arr.shape, value=describe(x))
+        raise DHLabError(with_decimal_comma_note(message, arr.tolist(), size) if arr.ndim == 1 else message)
     check_finite(arr, name)
     return arr
 

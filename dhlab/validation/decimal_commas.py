@@ -21,7 +21,7 @@ import re
 
 from ..i18n import _
 
-__all__ = ["looks_like_decimal_comma", "decimal_comma_note"]
+__all__ = ["looks_like_decimal_comma", "decimal_comma_note", "with_decimal_comma_note"]
 
 # "0,4", "-1,25", " 12,5 ": one comma between digits, nothing else (not "1,2,3", a list)
 COMMA_NUMBER = re.compile(r"\s*[-+−]?\d+,\d+\s*")
@@ -71,3 +71,16 @@ def decimal_comma_note(value, expected: int | None = None) -> str:
                  "decimal points (0.4); in Python a comma separates two values.").format(
             count=len(values), expected=expected)
     return ""
+
+
+def with_decimal_comma_note(message: str, value, expected: int | None = None) -> str:
+    """``message``, then :func:`decimal_comma_note` of ``value`` when it has one (and ``message``
+    does not already say it): how every reader of numbers ends its complaint.
+
+    >>> with_decimal_comma_note("x must be a number.", "0,4")[:45]
+    "x must be a number. '0,4' has a decimal comma"
+    >>> with_decimal_comma_note("x must be a number.", "abc")
+    'x must be a number.'
+    """
+    note = decimal_comma_note(value, expected)
+    return f"{message} {note}" if note and note not in message else message

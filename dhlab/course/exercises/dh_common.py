@@ -20,7 +20,7 @@ from ...errors import DHLabError
 from ...i18n import _
 from ...lines import Line, relation
 from ...mdh import MDHRobot
-from ...validation import as_index, as_tolerance, decimal_comma_note, describe
+from ...validation import as_index, as_tolerance, describe, with_decimal_comma_note
 from ..checks.feedback import Feedback, short_repr
 from ..checks.reading import Refused, to_vector
 
@@ -83,10 +83,8 @@ def read_numbers(answer, count: int, what: str):
     try:
         values = to_vector(answer, _("your answer"), count)
     except Refused as why:
-        problem = _("{why} Give {count} numbers {what}.").format(why=why, count=count, what=what)
-        if str(why).find(decimal_comma_note(answer, count) or "\0") < 0:     # (unless the reason says it)
-            problem = " ".join(filter(None, [problem, decimal_comma_note(answer, count)]))
-        return None, problem
+        return None, with_decimal_comma_note(
+            _("{why} Give {count} numbers {what}.").format(why=why, count=count, what=what), answer, count)
     if isinstance(values, list):          # sympy expressions with symbols in them
         return None, _("give {count} numbers {what}, not symbols.").format(count=count, what=what)
     return [float(v) for v in values], ""

@@ -27,8 +27,8 @@ from ...validation import (
     as_text,
     as_vector,
     check_length_size,
-    decimal_comma_note,
     describe,
+    with_decimal_comma_note,
 )
 from ..checks.feedback import Exercise, Feedback, unanswered
 from ..checks.reading import is_unanswered
@@ -256,8 +256,8 @@ def _row_problem(rows) -> str:
             return _("row {k} must be a tuple (θ, d, a, α), not {type} {value}.").format(
                 k=k, type=type(row).__name__, value=quoted(row))
         if len(row) != 4:
-            problem = _("row {k} has {n} entries; a DH row has 4: (θ, d, a, α).").format(k=k, n=len(row))
-            return " ".join(filter(None, [problem, decimal_comma_note(row, 4)]))
+            return with_decimal_comma_note(
+                _("row {k} has {n} entries; a DH row has 4: (θ, d, a, α).").format(k=k, n=len(row)), row, 4)
         for column, value in zip("θdaα", row):
             if isinstance(value, str):
                 continue                      # a joint variable or a length by name, read by from_table
